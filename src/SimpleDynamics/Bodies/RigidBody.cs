@@ -1,0 +1,371 @@
+using System;
+using System.Numerics;
+using System.Threading;
+using SimpleDynamics.Mathematics;
+
+namespace SimpleDynamics.Bodies;
+
+/// <summary>
+/// A rigid body whose shape is a bounding circle (in 2-D, z = 0) or sphere (in 3-D) of <see cref="Radius"/>.
+/// </summary>
+/// <remarks>
+/// <para><b>Units</b> are SI throughout: metres, kilograms, seconds, radians; velocities in m/s and rad/s,
+/// impulses in N·s (tutorial eq. 3–4).</para>
+/// <para><b>Frames.</b> <see cref="Position"/> is the centre of mass in world coordinates;
+/// <see cref="Orientation"/> rotates body coordinates into world coordinates; <see cref="AngularVelocity"/> is
+/// in world coordinates. <see cref="Inertia"/> is given in the body frame and rotated into the world frame as
+/// <c>I_w⁻¹ = R I⁻¹ Rᵀ</c> for eq. 15–16 (<see cref="InverseInertiaWorld"/>).</para>
+/// <para><b>Static</b> means infinite mass: <see cref="InverseMass"/> = 0 and <see cref="InverseInertiaWorld"/> = 0,
+/// so no impulse or force moves it, and it never moves at all. A <b>kinematic</b> body also has infinite mass but
+/// moves with the velocity you give it.</para>
+/// <para>Every setter validates its value and throws an <see cref="ArgumentException"/> naming the property,
+/// leaving the body unchanged.</para>
+/// </remarks>
+public sealed class RigidBody
+{
+    private static int s_nextId;
+
+    // Fields, not auto-properties: the world's hot path reads and writes them directly.
+    internal Vector3 position;
+    internal Quaternion orientation = Quaternion.Identity;
+    internal Vector3 linearVelocity;
+    internal Vector3 angularVelocity;
+    internal Vector3 force;
+    internal Vector3 torque;
+    internal float radius;
+    internal float mass;
+    internal float inverseMass;
+    internal Matrix3 inertia;
+    internal Matrix3 inverseInertia;
+    internal Matrix3 inverseInertiaWorld;
+    internal float? restitution;
+    internal float? friction;
+
+    /// <summary>The body's slot in its world's body array, or -1 when it is in no world.</summary>
+    internal int index = -1;
+
+    /// <summary>
+    /// Creates a dynamic body with the inertia of a solid sphere (2/5 m r²). For a 2-D disc pass
+    /// <see cref="Bodies.Inertia.Disc"/>; any symmetric positive-definite tensor may be given.
+    /// </summary>
+    /// <param name="mass">Mass in kg; positive and finite.</param>
+    /// <param name="radius">Radius of the bounding circle/sphere in m; positive and finite.</param>
+    /// <param name="position">Centre of mass in world coordinates.</param>
+    /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
+    public RigidBody(float mass, float radius, Vector3 position)
+        : this(mass, radius, position, default, useSphereInertia: true)
+    {
+    }
+
+    /// <summary>Creates a dynamic body with a given body-frame inertia tensor (kg·m²).</summary>
+    /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
+    public RigidBody(float mass, float radius, Vector3 position, Matrix3 inertia)
+        : this(mass, radius, position, inertia, useSphereInertia: false)
+    {
+    }
+
+    private RigidBody(float mass, float radius, Vector3 position, Matrix3 inertia, bool useSphereInertia)
+    {
+        Guard.Positive(mass, nameof(mass));
+        Guard.Positive(radius, nameof(radius));
+        Guard.Finite(position, nameof(position));
+        if (useSphereInertia)
+        {
+            inertia = Bodies.Inertia.SolidSphere(mass, radius);
+        }
+        else
+        {
+            Bodies.Inertia.Validate(inertia, nameof(inertia));
+        }
+
+        Id = Interlocked.Increment(ref s_nextId);
+        Type = BodyType.Dynamic;
+        this.radius = radius;
+        this.position = position;
+        SetMassUnchecked(mass, inertia);
+    }
+
+    private RigidBody(BodyType type, float radius, Vector3 position, Vector3 velocity)
+    {
+        Id = Interlocked.Increment(ref s_nextId);
+        Type = type;
+        this.radius = radius;
+        this.position = position;
+        linearVelocity = velocity;
+        mass = float.PositiveInfinity;
+        inertia = Matrix3.Diagonal(float.PositiveInfinity, float.PositiveInfinity, float.PositiveInfinity);
+        // inverseMass, inverseInertia and inverseInertiaWorld stay zero: infinite mass.
+    }
+
+    /// <summary>Creates a static body: infinite mass, never moves.</summary>
+    /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
+    public static RigidBody CreateStatic(float radius, Vector3 position)
+    {
+        Guard.Positive(radius, nameof(radius));
+        Guard.Finite(position, nameof(position));
+        return new RigidBody(BodyType.Static, radius, position, Vector3.Zero);
+    }
+
+    /// <summary>Creates a kinematic body: infinite mass, moves with <paramref name="velocity"/>.</summary>
+    /// <exception cref="ArgumentException">An argument is out of range; the message names it.</exception>
+    public static RigidBody CreateKinematic(float radius, Vector3 position, Vector3 velocity)
+    {
+        Guard.Positive(radius, nameof(radius));
+        Guard.Finite(position, nameof(position));
+        Guard.Finite(velocity, nameof(velocity));
+        return new RigidBody(BodyType.Kinematic, radius, position, velocity);
+    }
+
+    /// <summary>The fixed world frame: the static body that contacts with planes name as body B.</summary>
+    internal static RigidBody CreateGround() => new(BodyType.Static, 0f, Vector3.Zero, Vector3.Zero);
+
+    /// <summary>A number unique to this body in the process; contact persistence keys pairs by it.</summary>
+    public int Id { get; }
+
+    /// <summary>Dynamic, static or kinematic.</summary>
+    public BodyType Type { get; }
+
+    /// <summary>True for a dynamic body (finite mass).</summary>
+    public bool IsDynamic => Type == BodyType.Dynamic;
+
+    /// <summary>Mass in kg; <see cref="float.PositiveInfinity"/> for static and kinematic bodies.</summary>
+    public float Mass => mass;
+
+    /// <summary>1 / mass; 0 for static and kinematic bodies.</summary>
+    public float InverseMass => inverseMass;
+
+    /// <summary>Body-frame inertia tensor about the centre of mass (kg·m²).</summary>
+    public Matrix3 Inertia => inertia;
+
+    /// <summary>World-frame inverse inertia tensor, R I⁻¹ Rᵀ (eq. 15–16); zero for static and kinematic bodies.</summary>
+    public Matrix3 InverseInertiaWorld => inverseInertiaWorld;
+
+    /// <summary>Radius of the bounding circle/sphere (m).</summary>
+    public float Radius
+    {
+        get => radius;
+        set
+        {
+            Guard.Positive(value, nameof(Radius));
+            radius = value;
+        }
+    }
+
+    /// <summary>Centre of mass, world coordinates (m).</summary>
+    public Vector3 Position
+    {
+        get => position;
+        set
+        {
+            Guard.Finite(value, nameof(Position));
+            position = value;
+        }
+    }
+
+    /// <summary>Rotation from body to world coordinates; normalised when set.</summary>
+    public Quaternion Orientation
+    {
+        get => orientation;
+        set
+        {
+            if (!Vectors.IsFinite(value) || value.LengthSquared() < 1e-12f)
+            {
+                throw new ArgumentException("Orientation must be a finite, non-zero quaternion.", nameof(Orientation));
+            }
+
+            orientation = Quaternion.Normalize(value);
+            UpdateInverseInertiaWorld();
+        }
+    }
+
+    /// <summary>Velocity of the centre of mass (m/s). A static body's is always zero.</summary>
+    /// <exception cref="InvalidOperationException">Setting a non-zero velocity on a static body.</exception>
+    public Vector3 LinearVelocity
+    {
+        get => linearVelocity;
+        set
+        {
+            Guard.Finite(value, nameof(LinearVelocity));
+            ThrowIfStaticAndMoving(value, nameof(LinearVelocity));
+            linearVelocity = value;
+        }
+    }
+
+    /// <summary>Angular velocity in world coordinates (rad/s). A static body's is always zero.</summary>
+    /// <exception cref="InvalidOperationException">Setting a non-zero angular velocity on a static body.</exception>
+    public Vector3 AngularVelocity
+    {
+        get => angularVelocity;
+        set
+        {
+            Guard.Finite(value, nameof(AngularVelocity));
+            ThrowIfStaticAndMoving(value, nameof(AngularVelocity));
+            angularVelocity = value;
+        }
+    }
+
+    /// <summary>
+    /// Coefficient of restitution ε ∈ [0, 1] of this body's surface, or null to use the responder's setting.
+    /// How two bodies' values combine is set by <see cref="Response.MaterialMixing"/>.
+    /// </summary>
+    public float? Restitution
+    {
+        get => restitution;
+        set
+        {
+            if (value is float v)
+            {
+                Guard.UnitInterval(v, nameof(Restitution));
+            }
+
+            restitution = value;
+        }
+    }
+
+    /// <summary>
+    /// Coulomb friction coefficient μ ≥ 0 of this body's surface, or null to use the responder's setting.
+    /// </summary>
+    public float? Friction
+    {
+        get => friction;
+        set
+        {
+            if (value is float v)
+            {
+                Guard.NonNegative(v, nameof(Friction));
+            }
+
+            friction = value;
+        }
+    }
+
+    /// <summary>Force accumulated since the last step (N); cleared by each step.</summary>
+    public Vector3 Force => force;
+
+    /// <summary>Torque accumulated since the last step (N·m), world frame; cleared by each step.</summary>
+    public Vector3 Torque => torque;
+
+    /// <summary>The world the body belongs to, or null.</summary>
+    public World? World { get; internal set; }
+
+    /// <summary>Changes mass and body-frame inertia of a dynamic body.</summary>
+    /// <exception cref="ArgumentException">An argument is out of range; the body is unchanged.</exception>
+    /// <exception cref="InvalidOperationException">The body is not dynamic.</exception>
+    public void SetMass(float mass, Matrix3 inertia)
+    {
+        Guard.Positive(mass, nameof(mass));
+        Bodies.Inertia.Validate(inertia, nameof(inertia));
+        if (!IsDynamic)
+        {
+            throw new InvalidOperationException($"A {Type} body has infinite mass; only a dynamic body's mass can be set.");
+        }
+
+        SetMassUnchecked(mass, inertia);
+    }
+
+    /// <summary>Adds a force through the centre of mass, applied during the next step.</summary>
+    public void ApplyForce(Vector3 force)
+    {
+        Guard.Finite(force, nameof(force));
+        this.force += force;
+    }
+
+    /// <summary>Adds a force at a world point; it also adds the torque (point − c) × F.</summary>
+    public void ApplyForce(Vector3 force, Vector3 point)
+    {
+        Guard.Finite(force, nameof(force));
+        Guard.Finite(point, nameof(point));
+        this.force += force;
+        torque += Vector3.Cross(point - position, force);
+    }
+
+    /// <summary>Adds a torque (world frame), applied during the next step.</summary>
+    public void ApplyTorque(Vector3 torque)
+    {
+        Guard.Finite(torque, nameof(torque));
+        this.torque += torque;
+    }
+
+    /// <summary>
+    /// Applies an impulse (N·s) at a world point at once: Δv = J/m (eq. 6), Δω = I_w⁻¹ (r × J) (eq. 15).
+    /// Does nothing to a static or kinematic body.
+    /// </summary>
+    public void ApplyImpulse(Vector3 impulse, Vector3 point)
+    {
+        Guard.Finite(impulse, nameof(impulse));
+        Guard.Finite(point, nameof(point));
+        linearVelocity += impulse * inverseMass;
+        angularVelocity += inverseInertiaWorld.Transform(Vector3.Cross(point - position, impulse));
+    }
+
+    /// <summary>Velocity of the material point at a world position: v + ω × (p − c) (eq. 12–13).</summary>
+    public Vector3 VelocityAt(Vector3 point) => linearVelocity + Vector3.Cross(angularVelocity, point - position);
+
+    /// <summary>Linear momentum m v (kg·m/s); zero for infinite-mass bodies, which the diagnostics leave out.</summary>
+    public Vector3 LinearMomentum => IsDynamic ? mass * linearVelocity : Vector3.Zero;
+
+    /// <summary>
+    /// Angular momentum about a fixed world point: I_w ω + (c − point) × m v (eq. 11 plus the orbital part);
+    /// zero for infinite-mass bodies.
+    /// </summary>
+    public Vector3 AngularMomentumAbout(Vector3 point)
+    {
+        if (!IsDynamic)
+        {
+            return Vector3.Zero;
+        }
+
+        Matrix3 inertiaWorld = inertia.RotatedBy(orientation);
+        return inertiaWorld.Transform(angularVelocity) + Vector3.Cross(position - point, mass * linearVelocity);
+    }
+
+    /// <summary>Kinetic energy ½ m v² + ½ ωᵀ I_w ω (J); zero for infinite-mass bodies.</summary>
+    public float KineticEnergy
+    {
+        get
+        {
+            if (!IsDynamic)
+            {
+                return 0f;
+            }
+
+            Matrix3 inertiaWorld = inertia.RotatedBy(orientation);
+            return 0.5f * mass * linearVelocity.LengthSquared()
+                + 0.5f * Vector3.Dot(angularVelocity, inertiaWorld.Transform(angularVelocity));
+        }
+    }
+
+    /// <inheritdoc />
+    public override string ToString() => $"{Type} body #{Id} at {position}";
+
+    internal void UpdateInverseInertiaWorld()
+    {
+        if (IsDynamic)
+        {
+            inverseInertiaWorld = inverseInertia.RotatedBy(orientation);
+        }
+    }
+
+    internal void ClearAccumulators()
+    {
+        force = Vector3.Zero;
+        torque = Vector3.Zero;
+    }
+
+    private void SetMassUnchecked(float mass, Matrix3 inertia)
+    {
+        this.mass = mass;
+        inverseMass = 1f / mass;
+        this.inertia = inertia;
+        inverseInertia = inertia.Inverse();
+        UpdateInverseInertiaWorld();
+    }
+
+    private void ThrowIfStaticAndMoving(Vector3 value, string property)
+    {
+        if (Type == BodyType.Static && value != Vector3.Zero)
+        {
+            throw new InvalidOperationException($"{property}: a static body never moves; use a kinematic body for one that moves.");
+        }
+    }
+}

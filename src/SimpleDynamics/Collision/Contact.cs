@@ -1,0 +1,94 @@
+using System.Numerics;
+using SimpleDynamics.Bodies;
+
+namespace SimpleDynamics.Collision;
+
+/// <summary>
+/// One contact between two bodies: what the tutorial's §2.1 asks of collision detection — the contact point,
+/// the contact normal and the penetration depth.
+/// </summary>
+/// <remarks>
+/// <para><b>Normal convention.</b> <see cref="Normal"/> is a unit vector pointing from body B to body A, the
+/// convention of eq. 5: a positive impulse J pushes A along +n and B along −n. The relative normal velocity is
+/// <c>(v_pA − v_pB)·n</c> (eq. 13–14); it is negative while the bodies approach. A contact whose relative
+/// normal velocity is ≥ 0 is separating or resting and gets no impulse. (Listing 3 of the tutorial writes the
+/// separating test with the opposite sign because its normal points the other way.)</para>
+/// <para><b>Penetration</b> is measured along the normal: for two circles r_A + r_B − d, for a circle and a
+/// plane r − (signed distance of the centre from the plane). Positive means overlapping.</para>
+/// <para>Contacts with a <see cref="StaticPlane"/> name <see cref="World.Ground"/> (the fixed world frame) as B.</para>
+/// </remarks>
+public struct Contact
+{
+    /// <summary>Body A; the normal points towards it.</summary>
+    public RigidBody BodyA;
+
+    /// <summary>Body B; the normal points away from it.</summary>
+    public RigidBody BodyB;
+
+    /// <summary>Contact point in world coordinates: the middle of the overlap along the normal.</summary>
+    public Vector3 Point;
+
+    /// <summary>Unit contact normal, from B to A.</summary>
+    public Vector3 Normal;
+
+    /// <summary>Penetration depth along the normal (m); positive when overlapping.</summary>
+    public float Penetration;
+
+    /// <summary>
+    /// Relative normal velocity <c>(v_pA − v_pB)·n</c> when the contact was detected, before this step's forces.
+    /// The iterative solver takes the bounce (eq. 9) from it, so that gravity acting during the contact step
+    /// adds no energy.
+    /// </summary>
+    public float ApproachVelocity;
+
+    /// <summary>Normal impulse (N·s) the responder applied in the last step; 0 if none.</summary>
+    public float NormalImpulse;
+
+    /// <summary>Size of the tangential (friction) impulse (N·s) applied in the last step.</summary>
+    public float TangentImpulse;
+
+    /// <summary>Identifies the pair across steps (contact persistence for warm starting).</summary>
+    internal ulong Key;
+
+    /// <summary>Index of the plane when B is the ground, else -1.</summary>
+    internal int PlaneIndex;
+
+    /// <summary>For a plane contact: the plane's offset along the normal.</summary>
+    internal float PlaneOffset;
+
+    /// <summary>For a plane contact: the plane's surface restitution, if it sets one.</summary>
+    internal float? PlaneRestitution;
+
+    /// <summary>For a plane contact: the plane's surface friction, if it sets one.</summary>
+    internal float? PlaneFriction;
+
+    /// <summary>True when body B is the ground of a <see cref="StaticPlane"/>.</summary>
+    public readonly bool IsPlaneContact => PlaneIndex >= 0;
+
+    /// <summary>Creates a contact, as a test or a custom detector would.</summary>
+    public Contact(RigidBody bodyA, RigidBody bodyB, Vector3 point, Vector3 normal, float penetration)
+    {
+        BodyA = bodyA;
+        BodyB = bodyB;
+        Point = point;
+        Normal = normal;
+        Penetration = penetration;
+        ApproachVelocity = Vector3.Dot(bodyA.VelocityAt(point) - bodyB.VelocityAt(point), normal);
+        NormalImpulse = 0;
+        TangentImpulse = 0;
+        Key = PairKey(bodyA.Id, bodyB.Id);
+        PlaneIndex = -1;
+        PlaneOffset = 0;
+        PlaneRestitution = null;
+        PlaneFriction = null;
+    }
+
+    /// <summary>Relative velocity of A with respect to B at the contact point, v_pA − v_pB (eq. 13–14).</summary>
+    public readonly Vector3 RelativeVelocity => BodyA.VelocityAt(Point) - BodyB.VelocityAt(Point);
+
+    internal static ulong PairKey(int idA, int idB) =>
+        idA < idB ? ((ulong)(uint)idA << 32) | (uint)idB : ((ulong)(uint)idB << 32) | (uint)idA;
+
+    internal static ulong PlaneKey(int bodyId, int planeIndex) =>
+        ((ulong)(uint)bodyId << 32) | 0x8000_0000u | (uint)planeIndex;
+}

@@ -1,0 +1,107 @@
+using System;
+using System.Numerics;
+using SimpleDynamics.Bodies;
+
+namespace SimpleDynamics.Collision;
+
+/// <summary>
+/// The narrow phase for bounding circles/spheres: the exact overlap test and the contact it produces. Every
+/// detector, the position correction and the diagnostics measure penetration with these same functions.
+/// </summary>
+public static class ContactGeometry
+{
+    /// <summary>
+    /// Penetration of two circles along the line of centres, r_A + r_B − d, and the unit normal from B to A.
+    /// Coincident centres (d below about 1e-6 of the radii) get the defined normal +y, never NaN.
+    /// </summary>
+    public static float CirclePenetration(Vector3 centreA, float radiusA, Vector3 centreB, float radiusB, out Vector3 normal)
+    {
+        Vector3 delta = centreA - centreB;
+        float distanceSquared = delta.LengthSquared();
+        float radii = radiusA + radiusB;
+        if (distanceSquared <= 1e-12f * radii * radii)
+        {
+            normal = Vector3.UnitY;
+            return radii;
+        }
+
+        float distance = MathF.Sqrt(distanceSquared);
+        normal = delta / distance;
+        return radii - distance;
+    }
+
+    /// <summary>Penetration of a circle into a plane: r − (signed distance of the centre).</summary>
+    public static float PlanePenetration(Vector3 centre, float radius, Vector3 planeNormal, float planeOffset) =>
+        radius - (Vector3.Dot(planeNormal, centre) - planeOffset);
+
+    /// <summary>
+    /// True when the bounding circles of two bodies overlap (d &lt; r_A + r_B) and the pair can collide (at least
+    /// one is dynamic). Fills a contact with A = <paramref name="a"/>, B = <paramref name="b"/>.
+    /// </summary>
+    public static bool TryCollide(RigidBody a, RigidBody b, out Contact contact)
+    {
+        contact = default;
+        if (!a.IsDynamic && !b.IsDynamic)
+        {
+            return false; // two infinite masses: nothing to resolve
+        }
+
+        float radii = a.radius + b.radius;
+        if (Vector3.DistanceSquared(a.position, b.position) >= radii * radii)
+        {
+            return false;
+        }
+
+        float penetration = CirclePenetration(a.position, a.radius, b.position, b.radius, out Vector3 normal);
+        Vector3 point = a.position - normal * (a.radius - 0.5f * penetration);
+        contact = new Contact(a, b, point, normal, penetration);
+        return true;
+    }
+
+    /// <summary>True when a dynamic body's circle reaches into a plane; fills the contact (B = ground).</summary>
+    public static bool TryCollide(RigidBody body, in StaticPlane plane, int planeIndex, RigidBody ground, out Contact contact)
+    {
+        contact = default;
+        if (!body.IsDynamic)
+        {
+            return false;
+        }
+
+        float penetration = PlanePenetration(body.position, body.radius, plane.Normal, plane.Offset);
+        if (penetration <= 0)
+        {
+            return false;
+        }
+
+        Vector3 point = body.position - plane.Normal * (body.radius - 0.5f * penetration);
+        contact = new Contact(body, ground, point, plane.Normal, penetration)
+        {
+            Key = Contact.PlaneKey(body.Id, planeIndex),
+            PlaneIndex = planeIndex,
+            PlaneOffset = plane.Offset,
+            PlaneRestitution = plane.Restitution,
+            PlaneFriction = plane.Friction,
+        };
+        return true;
+    }
+
+    /// <summary>
+    /// Measures a contact again at the bodies' current positions: penetration, normal and point. Used after
+    /// positions have moved within a step.
+    /// </summary>
+    public static void Refresh(ref Contact contact)
+    {
+        RigidBody a = contact.BodyA;
+        if (contact.PlaneIndex >= 0)
+        {
+            contact.Penetration = PlanePenetration(a.position, a.radius, contact.Normal, contact.PlaneOffset);
+        }
+        else
+        {
+            RigidBody b = contact.BodyB;
+            contact.Penetration = CirclePenetration(a.position, a.radius, b.position, b.radius, out contact.Normal);
+        }
+
+        contact.Point = a.position - contact.Normal * (a.radius - 0.5f * contact.Penetration);
+    }
+}

@@ -1,0 +1,269 @@
+using System;
+using System.Numerics;
+using SimpleDynamics.Bodies;
+
+namespace SimpleDynamics.Collision;
+
+/// <summary>
+/// Broad phase on a uniform grid stored in a spatial hash: each body is entered in every cell its bounding box
+/// touches, and only bodies sharing a cell are tested. Expected O(n) for bodies of similar size.
+/// </summary>
+/// <remarks>
+/// <para><b>Why a grid.</b> Games step many circles of similar size in a bounded region. Measured in
+/// <c>benchmarks/</c>: against sort-and-sweep (whose cost grows with how many boxes overlap on the sweep axis,
+/// about √n per body in a dense 2-D pit) and against brute force, the grid wins on equal radii and stays
+/// ahead on widely mixed radii, because a large body simply occupies several cells.</para>
+/// <para><b>Exactly once.</b> A pair is reported only in the cell that holds the minimum corner of the
+/// intersection of the two bounding boxes, the one cell both bodies are certain to share; so no pair is found
+/// twice and no set of seen pairs is needed.</para>
+/// <para><b>Cell size</b> is twice the mean radius, chosen anew every step. A body that would cover more than
+/// <see cref="MaxCellsPerBody"/> cells (a huge ground disc, say) is kept out of the grid and tested against every
+/// body instead.</para>
+/// <para>All working arrays are kept and reused: once warm, a step allocates nothing.</para>
+/// </remarks>
+public sealed class SpatialHashDetector : ICollisionDetector
+{
+    /// <summary>A body covering more cells than this is tested directly against all others.</summary>
+    public const int MaxCellsPerBody = 64;
+
+    private const int CellLimit = 1 << 20; // cell coordinates are clamped here: far-away bodies share edge cells
+
+    private Bounds[] _bounds = new Bounds[16];
+    private Entry[] _entries = new Entry[16];
+    private int[] _bucketStart = new int[17];
+    private int[] _oversized = new int[4];
+    private int _oversizedCount;
+
+    /// <inheritdoc />
+    public void FindContacts(ReadOnlySpan<RigidBody> bodies, CollisionData collisions)
+    {
+        Guard.NotNull(collisions, nameof(collisions));
+        int n = bodies.Length;
+        if (n < 2)
+        {
+            return;
+        }
+
+        float inverseCellSize = GatherBounds(bodies);
+        int entryCount = CountEntries(n, inverseCellSize);
+        int bucketMask = PrepareBuckets(entryCount);
+        FillBuckets(n, bucketMask);
+        FindPairsInBuckets(bodies, bucketMask, collisions, inverseCellSize);
+        FindPairsWithOversized(bodies, collisions);
+    }
+
+    private float GatherBounds(ReadOnlySpan<RigidBody> bodies)
+    {
+        EnsureCapacity(ref _bounds, bodies.Length);
+        double radiusSum = 0;
+        for (int i = 0; i < bodies.Length; i++)
+        {
+            RigidBody body = bodies[i];
+            _bounds[i] = new Bounds { Centre = body.position, Radius = body.radius };
+            radiusSum += body.radius;
+        }
+
+        float cellSize = (float)(2 * radiusSum / bodies.Length);
+        return 1f / cellSize;
+    }
+
+    /// <summary>Computes each body's cell range; counts grid entries and sets oversized bodies aside.</summary>
+    private int CountEntries(int n, float inverseCellSize)
+    {
+        _oversizedCount = 0;
+        int entries = 0;
+        for (int i = 0; i < n; i++)
+        {
+            ref Bounds b = ref _bounds[i];
+            Vector3 min = b.Centre - new Vector3(b.Radius), max = b.Centre + new Vector3(b.Radius);
+            b.Min = new Cell(CellOf(min.X, inverseCellSize), CellOf(min.Y, inverseCellSize), CellOf(min.Z, inverseCellSize));
+            b.Max = new Cell(CellOf(max.X, inverseCellSize), CellOf(max.Y, inverseCellSize), CellOf(max.Z, inverseCellSize));
+            long cells = (long)(b.Max.X - b.Min.X + 1) * (b.Max.Y - b.Min.Y + 1) * (b.Max.Z - b.Min.Z + 1);
+            if (cells > MaxCellsPerBody)
+            {
+                b.Oversized = true;
+                EnsureCapacity(ref _oversized, _oversizedCount + 1);
+                _oversized[_oversizedCount++] = i;
+            }
+            else
+            {
+                b.Oversized = false;
+                entries += (int)cells;
+            }
+        }
+
+        return entries;
+    }
+
+    private int PrepareBuckets(int entryCount)
+    {
+        int buckets = 16;
+        while (buckets < 2 * entryCount)
+        {
+            buckets <<= 1;
+        }
+
+        EnsureCapacity(ref _entries, entryCount);
+        EnsureCapacity(ref _bucketStart, buckets + 1);
+        Array.Clear(_bucketStart, 0, buckets + 1);
+        return buckets - 1;
+    }
+
+    /// <summary>Counting sort of (cell, body) entries by hash bucket.</summary>
+    private void FillBuckets(int n, int bucketMask)
+    {
+        // Count per bucket (shifted by one so that the prefix sum yields start offsets).
+        for (int i = 0; i < n; i++)
+        {
+            ref Bounds b = ref _bounds[i];
+            if (b.Oversized)
+            {
+                continue;
+            }
+
+            for (int z = b.Min.Z; z <= b.Max.Z; z++)
+            for (int y = b.Min.Y; y <= b.Max.Y; y++)
+            for (int x = b.Min.X; x <= b.Max.X; x++)
+            {
+                _bucketStart[(Hash(x, y, z) & bucketMask) + 1]++;
+            }
+        }
+
+        for (int k = 1; k <= bucketMask + 1; k++)
+        {
+            _bucketStart[k] += _bucketStart[k - 1];
+        }
+
+        // Fill, advancing each bucket's start; afterwards _bucketStart[k] is the end of bucket k ...
+        for (int i = 0; i < n; i++)
+        {
+            ref Bounds b = ref _bounds[i];
+            if (b.Oversized)
+            {
+                continue;
+            }
+
+            for (int z = b.Min.Z; z <= b.Max.Z; z++)
+            for (int y = b.Min.Y; y <= b.Max.Y; y++)
+            for (int x = b.Min.X; x <= b.Max.X; x++)
+            {
+                int slot = _bucketStart[Hash(x, y, z) & bucketMask]++;
+                _entries[slot] = new Entry { Body = i, Cell = new Cell(x, y, z) };
+            }
+        }
+
+        // ... so shift back by one to restore the starts.
+        for (int k = bucketMask + 1; k > 0; k--)
+        {
+            _bucketStart[k] = _bucketStart[k - 1];
+        }
+
+        _bucketStart[0] = 0;
+    }
+
+    private void FindPairsInBuckets(ReadOnlySpan<RigidBody> bodies, int bucketMask, CollisionData collisions, float inverseCellSize)
+    {
+        for (int k = 0; k <= bucketMask; k++)
+        {
+            int start = _bucketStart[k], end = _bucketStart[k + 1];
+            for (int p = start; p < end; p++)
+            {
+                Entry first = _entries[p];
+                for (int q = p + 1; q < end; q++)
+                {
+                    Entry second = _entries[q];
+                    if (!first.Cell.Equals(second.Cell))
+                    {
+                        continue; // another cell that hashed to the same bucket
+                    }
+
+                    int i = Math.Min(first.Body, second.Body), j = Math.Max(first.Body, second.Body);
+                    if (!first.Cell.Equals(OwnerCell(i, j, inverseCellSize)))
+                    {
+                        continue; // this pair is reported in another cell
+                    }
+
+                    if (ContactGeometry.TryCollide(bodies[i], bodies[j], out Contact contact))
+                    {
+                        collisions.Add(contact);
+                    }
+                }
+            }
+        }
+    }
+
+    private void FindPairsWithOversized(ReadOnlySpan<RigidBody> bodies, CollisionData collisions)
+    {
+        for (int o = 0; o < _oversizedCount; o++)
+        {
+            int big = _oversized[o];
+            for (int j = 0; j < bodies.Length; j++)
+            {
+                // Pairs of two oversized bodies are taken once, from the one with the lower index.
+                if (j == big || (_bounds[j].Oversized && j < big))
+                {
+                    continue;
+                }
+
+                int a = Math.Min(big, j), b = Math.Max(big, j);
+                if (ContactGeometry.TryCollide(bodies[a], bodies[b], out Contact contact))
+                {
+                    collisions.Add(contact);
+                }
+            }
+        }
+    }
+
+    /// <summary>The cell of the minimum corner of the intersection of two bounding boxes.</summary>
+    private Cell OwnerCell(int i, int j, float inverseCellSize)
+    {
+        Vector3 cornerI = _bounds[i].Centre - new Vector3(_bounds[i].Radius);
+        Vector3 cornerJ = _bounds[j].Centre - new Vector3(_bounds[j].Radius);
+        Vector3 corner = Vector3.Max(cornerI, cornerJ);
+        return new Cell(CellOf(corner.X, inverseCellSize), CellOf(corner.Y, inverseCellSize), CellOf(corner.Z, inverseCellSize));
+    }
+
+    private static int CellOf(float coordinate, float inverseCellSize) =>
+        (int)Math.Clamp(MathF.Floor(coordinate * inverseCellSize), -CellLimit, CellLimit);
+
+    private static int Hash(int x, int y, int z) => unchecked((x * 73856093) ^ (y * 19349663) ^ (z * 83492791));
+
+    private static void EnsureCapacity<T>(ref T[] array, int needed)
+    {
+        if (array.Length < needed)
+        {
+            Array.Resize(ref array, Math.Max(needed, array.Length * 2));
+        }
+    }
+
+    private struct Bounds
+    {
+        public Vector3 Centre;
+        public float Radius;
+        public Cell Min;
+        public Cell Max;
+        public bool Oversized;
+    }
+
+    private struct Entry
+    {
+        public int Body;
+        public Cell Cell;
+    }
+
+    private readonly struct Cell : IEquatable<Cell>
+    {
+        public readonly int X;
+        public readonly int Y;
+        public readonly int Z;
+
+        public Cell(int x, int y, int z)
+        {
+            X = x;
+            Y = y;
+            Z = z;
+        }
+
+        public bool Equals(Cell other) => X == other.X && Y == other.Y && Z == other.Z;
+    }
+}

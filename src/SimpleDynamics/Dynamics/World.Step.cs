@@ -1,0 +1,117 @@
+using System;
+using System.Numerics;
+using SimpleDynamics.Bodies;
+using SimpleDynamics.Collision;
+
+namespace SimpleDynamics;
+
+public sealed partial class World
+{
+    /// <summary>
+    /// Advances the world by <paramref name="dt"/> seconds.
+    /// </summary>
+    /// <remarks>
+    /// The pipeline:
+    /// <list type="number">
+    /// <item>detect: bounding circles against each other and against the planes (§2.1);</item>
+    /// <item>integrate velocities: gravity, forces and torques, semi-implicit Euler;</item>
+    /// <item>resolve velocities: the responder's impulses (eq. 2 or eq. 5–16);</item>
+    /// <item>integrate positions and orientations with the new velocities;</item>
+    /// <item>resolve positions: the responder's projection / position correction (listing 2);</item>
+    /// <item>measure the contacts again for <see cref="Collisions"/> and the diagnostics.</item>
+    /// </list>
+    /// Detection comes before the velocity update (positions are the same either way) so that each contact
+    /// records its approach velocity from before this step's gravity: a bounce then returns the speed the
+    /// body arrived with, not that plus g·dt, which would add energy at every bounce.
+    /// </remarks>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="dt"/> is not a positive, finite number; nothing changes.</exception>
+    public void Step(float dt)
+    {
+        Guard.Positive(dt, nameof(dt));
+        DetectCollisions();
+        IntegrateVelocities(dt);
+        Responder.ResolveVelocities(this, Collisions, dt);
+        IntegratePositions(dt);
+        MeasureContacts();
+        Responder.ResolvePositions(this, Collisions, dt);
+        MeasureContacts();
+        ClearForces();
+        Time += dt;
+    }
+
+    private void DetectCollisions()
+    {
+        Collisions.Clear();
+        Detector.FindContacts(BodySpan, Collisions);
+        ReadOnlySpan<StaticPlane> planes = Planes;
+        foreach (RigidBody body in BodySpan)
+        {
+            for (int p = 0; p < planes.Length; p++)
+            {
+                if (ContactGeometry.TryCollide(body, planes[p], p, Ground, out Contact contact))
+                {
+                    Collisions.Add(contact);
+                }
+            }
+        }
+    }
+
+    /// <summary>Semi-implicit Euler, velocity half: v += (g + F/m) dt, ω += I_w⁻¹ τ dt.</summary>
+    /// <remarks>
+    /// The gyroscopic term ω × (I ω) is left out, as in most game engines; it is zero for spheres and discs,
+    /// the shapes this library collides.
+    /// </remarks>
+    private void IntegrateVelocities(float dt)
+    {
+        foreach (RigidBody body in BodySpan)
+        {
+            if (body.IsDynamic)
+            {
+                body.linearVelocity += (Gravity + body.force * body.inverseMass) * dt;
+                body.angularVelocity += body.inverseInertiaWorld.Transform(body.torque) * dt;
+            }
+        }
+    }
+
+    /// <summary>
+    /// Semi-implicit Euler, position half, with the new velocities: x += v dt, q += ½ (ω, 0) q dt, renormalised.
+    /// Static bodies never move; kinematic bodies move with their set velocity.
+    /// </summary>
+    private void IntegratePositions(float dt)
+    {
+        foreach (RigidBody body in BodySpan)
+        {
+            if (body.Type == BodyType.Static)
+            {
+                continue;
+            }
+
+            body.position += body.linearVelocity * dt;
+            Vector3 w = body.angularVelocity;
+            if (w != Vector3.Zero)
+            {
+                Quaternion q = body.orientation;
+                Quaternion spin = new Quaternion(w, 0) * q;
+                q = new Quaternion(q.X + 0.5f * dt * spin.X, q.Y + 0.5f * dt * spin.Y, q.Z + 0.5f * dt * spin.Z, q.W + 0.5f * dt * spin.W);
+                body.orientation = Quaternion.Normalize(q);
+                body.UpdateInverseInertiaWorld();
+            }
+        }
+    }
+
+    private void MeasureContacts()
+    {
+        foreach (ref Contact contact in Collisions.Contacts)
+        {
+            ContactGeometry.Refresh(ref contact);
+        }
+    }
+
+    private void ClearForces()
+    {
+        foreach (RigidBody body in BodySpan)
+        {
+            body.ClearAccumulators();
+        }
+    }
+}

@@ -1,0 +1,66 @@
+using System;
+using System.Numerics;
+using SimpleDynamics.Mathematics;
+
+namespace SimpleDynamics;
+
+/// <summary>Argument checks that name the offending parameter. They throw before anything is changed.</summary>
+internal static class Guard
+{
+    public static void Positive(float value, string paramName)
+    {
+        if (!(value > 0) || !float.IsFinite(value))
+        {
+            throw new ArgumentOutOfRangeException(paramName, value, $"{paramName} must be a positive, finite number.");
+        }
+    }
+
+    public static void NonNegative(float value, string paramName)
+    {
+        if (!(value >= 0) || !float.IsFinite(value))
+        {
+            throw new ArgumentOutOfRangeException(paramName, value, $"{paramName} must be zero or a positive, finite number.");
+        }
+    }
+
+    public static void UnitInterval(float value, string paramName)
+    {
+        if (!(value >= 0 && value <= 1))
+        {
+            throw new ArgumentOutOfRangeException(paramName, value, $"{paramName} must lie in [0, 1].");
+        }
+    }
+
+    public static void AtLeast(int value, int minimum, string paramName)
+    {
+        if (value < minimum)
+        {
+            throw new ArgumentOutOfRangeException(paramName, value, $"{paramName} must be at least {minimum}.");
+        }
+    }
+
+    public static void Finite(Vector3 value, string paramName)
+    {
+        if (!Vectors.IsFinite(value))
+        {
+            throw new ArgumentException($"{paramName} must have finite components, but was {value}.", paramName);
+        }
+    }
+
+    public static void UnitVector(Vector3 value, string paramName)
+    {
+        Finite(value, paramName);
+        if (MathF.Abs(value.LengthSquared() - 1f) > 1e-3f)
+        {
+            throw new ArgumentException($"{paramName} must be a unit vector, but its length is {value.Length()}.", paramName);
+        }
+    }
+
+    public static void NotNull(object? value, string paramName)
+    {
+        if (value is null)
+        {
+            throw new ArgumentNullException(paramName);
+        }
+    }
+}

@@ -1,0 +1,41 @@
+using System.Numerics;
+
+namespace SimpleDynamics.Response;
+
+/// <summary>
+/// The impulse equations of the tutorial's §2.3, shared by every impulse-based responder so that they are
+/// written once.
+/// </summary>
+internal static class ImpulseMath
+{
+    /// <summary>
+    /// Relative velocity of A with respect to B at the contact: v_12 = v_p1 − v_p2 with
+    /// v_p = v + ω × r (eq. 13–14).
+    /// </summary>
+    public static Vector3 RelativeVelocity(in VelocityState a, in VelocityState b, Vector3 rA, Vector3 rB) =>
+        a.Linear + Vector3.Cross(a.Angular, rA) - (b.Linear + Vector3.Cross(b.Angular, rB));
+
+    /// <summary>
+    /// The denominator of eq. 16 for a unit direction d:
+    /// 1/m_1 + 1/m_2 + ((I_1⁻¹(r_1 × d)) × r_1 + (I_2⁻¹(r_2 × d)) × r_2) · d.
+    /// Its inverse is the effective mass m_eff that the contact sees along d.
+    /// </summary>
+    public static float EffectiveMassDenominator(in VelocityState a, in VelocityState b, Vector3 rA, Vector3 rB, Vector3 d)
+    {
+        Vector3 angularA = Vector3.Cross(a.InverseInertia.Transform(Vector3.Cross(rA, d)), rA);
+        Vector3 angularB = Vector3.Cross(b.InverseInertia.Transform(Vector3.Cross(rB, d)), rB);
+        return a.InverseMass + b.InverseMass + Vector3.Dot(angularA + angularB, d);
+    }
+
+    /// <summary>
+    /// Applies impulse P to A and −P to B at the contact: v' = v ± P/m (eq. 6) and
+    /// ω' = ω ± I⁻¹ (r × P) (eq. 15).
+    /// </summary>
+    public static void Apply(ref VelocityState a, ref VelocityState b, Vector3 rA, Vector3 rB, Vector3 impulse)
+    {
+        a.Linear += impulse * a.InverseMass;
+        a.Angular += a.InverseInertia.Transform(Vector3.Cross(rA, impulse));
+        b.Linear -= impulse * b.InverseMass;
+        b.Angular -= b.InverseInertia.Transform(Vector3.Cross(rB, impulse));
+    }
+}

@@ -1,0 +1,40 @@
+using SimpleDynamics.Collision;
+
+namespace SimpleDynamics.Response;
+
+/// <summary>
+/// Base of the tutorial's responders, which answer one pair at a time, each contact once per step, in
+/// detection order. Each can also be used on a single <see cref="Contact"/> directly.
+/// </summary>
+public abstract class PairwiseResponder : ICollisionResponder
+{
+    /// <summary>Answers one contact in the velocity pass; does nothing unless overridden.</summary>
+    public virtual void ResolveVelocity(ref Contact contact)
+    {
+    }
+
+    /// <summary>Answers one contact in the position pass; does nothing unless overridden.</summary>
+    public virtual void ResolvePosition(ref Contact contact)
+    {
+    }
+
+    /// <inheritdoc />
+    public void ResolveVelocities(World world, CollisionData collisions, float dt)
+    {
+        Guard.NotNull(collisions, nameof(collisions));
+        foreach (ref Contact contact in collisions.Contacts)
+        {
+            ResolveVelocity(ref contact);
+        }
+    }
+
+    /// <inheritdoc />
+    public void ResolvePositions(World world, CollisionData collisions, float dt)
+    {
+        Guard.NotNull(collisions, nameof(collisions));
+        foreach (ref Contact contact in collisions.Contacts)
+        {
+            ResolvePosition(ref contact);
+        }
+    }
+}

@@ -1,0 +1,398 @@
+using System;
+using System.Numerics;
+using SimpleDynamics.Bodies;
+using SimpleDynamics.Collision;
+using SimpleDynamics.Mathematics;
+
+namespace SimpleDynamics.Response;
+
+/// <summary>
+/// The engine's responder: all contacts of a step solved together by sequential impulses with accumulated-impulse
+/// clamping and warm starting (E. Catto, "Iterative Dynamics with Temporal Coherence", GDC 2005; "Fast and
+/// Simple Physics using Sequential Impulses", GDC 2006), built on the tutorial's eq. 13–16.
+/// </summary>
+/// <remarks>
+/// <para><b>Velocity pass.</b> Each iteration visits every contact and applies the impulse that would make its
+/// constraint hold, given what the other contacts did so far (Gauss–Seidel). Per contact, the <i>accumulated</i>
+/// normal impulse is clamped to ≥ 0 (a contact pushes, never pulls) and the accumulated friction impulse to the
+/// disc of radius μ × normal impulse (Coulomb). Warm starting applies last step's accumulated impulses first, so
+/// a resting pile starts each step almost solved.</para>
+/// <para><b>Restitution</b> (eq. 9) targets a relative normal velocity of −ε v_n0, where v_n0 is the approach
+/// velocity from before the step (<see cref="Contact.ApproachVelocity"/>). Below
+/// <see cref="RestitutionThreshold"/> ε acts as 0, so slow contacts come to rest instead of jittering.</para>
+/// <para><b>Position pass.</b> After positions are integrated, penetration deeper than <see cref="Slop"/> is
+/// removed by the projection of listing 2, split by inverse mass, over <see cref="PositionIterations"/>
+/// Gauss–Seidel sweeps (Box2D's non-linear Gauss–Seidel), each moving a contact by at most
+/// <see cref="MaxCorrection"/>. It moves positions only: unlike a Baumgarte velocity bias, it cannot turn into
+/// kinetic energy. For circles the normal passes through both centres, so r × n = 0 and no rotation is needed.</para>
+/// </remarks>
+public sealed class SequentialImpulseSolver : ICollisionResponder
+{
+    private readonly ContactCache _cache = new();
+    private VelocityState[] _bodies = new VelocityState[16];
+    private Vector3[] _positions = new Vector3[16];
+    private Constraint[] _constraints = new Constraint[16];
+
+    private int _velocityIterations = 8;
+    private int _positionIterations = 4;
+    private float _restitution;
+    private float _friction;
+    private float _restitutionThreshold = 0.5f;
+    private float _slop = 0.005f;
+    private float _correctionFactor = 0.4f;
+    private float _maxCorrection = 0.2f;
+    private MaterialMixing _mixing = MaterialMixing.Default;
+
+    /// <summary>Creates a solver with default restitution ε and friction μ for surfaces that set none.</summary>
+    public SequentialImpulseSolver(float restitution = 0.5f, float friction = 0.3f)
+    {
+        Restitution = restitution;
+        Friction = friction;
+    }
+
+    /// <summary>Velocity iterations per step (≥ 1). More iterations: stiffer piles, more time.</summary>
+    public int VelocityIterations
+    {
+        get => _velocityIterations;
+        set
+        {
+            Guard.AtLeast(value, 1, nameof(VelocityIterations));
+            _velocityIterations = value;
+        }
+    }
+
+    /// <summary>Position-correction sweeps per step (≥ 0; 0 turns the correction off).</summary>
+    public int PositionIterations
+    {
+        get => _positionIterations;
+        set
+        {
+            Guard.AtLeast(value, 0, nameof(PositionIterations));
+            _positionIterations = value;
+        }
+    }
+
+    /// <summary>Whether last step's impulses seed this step's (default on).</summary>
+    public bool WarmStarting { get; set; } = true;
+
+    /// <summary>Default coefficient of restitution ε ∈ [0, 1].</summary>
+    public float Restitution
+    {
+        get => _restitution;
+        set
+        {
+            Guard.UnitInterval(value, nameof(Restitution));
+            _restitution = value;
+        }
+    }
+
+    /// <summary>Default Coulomb friction coefficient μ ≥ 0.</summary>
+    public float Friction
+    {
+        get => _friction;
+        set
+        {
+            Guard.NonNegative(value, nameof(Friction));
+            _friction = value;
+        }
+    }
+
+    /// <summary>Approach speed (m/s, ≥ 0) below which a contact does not bounce. Default 0.5 m/s.</summary>
+    public float RestitutionThreshold
+    {
+        get => _restitutionThreshold;
+        set
+        {
+            Guard.NonNegative(value, nameof(RestitutionThreshold));
+            _restitutionThreshold = value;
+        }
+    }
+
+    /// <summary>Penetration (m, ≥ 0) left uncorrected, so resting contacts stay in touch. Default 5 mm.</summary>
+    public float Slop
+    {
+        get => _slop;
+        set
+        {
+            Guard.NonNegative(value, nameof(Slop));
+            _slop = value;
+        }
+    }
+
+    /// <summary>Fraction (0, 1] of the excess penetration removed per position sweep. Default 0.4.</summary>
+    public float CorrectionFactor
+    {
+        get => _correctionFactor;
+        set
+        {
+            Guard.Positive(value, nameof(CorrectionFactor));
+            Guard.UnitInterval(value, nameof(CorrectionFactor));
+            _correctionFactor = value;
+        }
+    }
+
+    /// <summary>Largest correction (m, &gt; 0) of one contact in one sweep. Default 0.2 m.</summary>
+    public float MaxCorrection
+    {
+        get => _maxCorrection;
+        set
+        {
+            Guard.Positive(value, nameof(MaxCorrection));
+            _maxCorrection = value;
+        }
+    }
+
+    /// <summary>How per-body ε and μ combine.</summary>
+    public MaterialMixing Mixing
+    {
+        get => _mixing;
+        set
+        {
+            Guard.NotNull(value, nameof(Mixing));
+            _mixing = value;
+        }
+    }
+
+    /// <summary>Forgets the stored impulses (e.g. after teleporting bodies).</summary>
+    public void ResetWarmStart() => _cache.Clear();
+
+    /// <inheritdoc />
+    public void ResolveVelocities(World world, CollisionData collisions, float dt)
+    {
+        Guard.NotNull(world, nameof(world));
+        Guard.NotNull(collisions, nameof(collisions));
+        ReadOnlySpan<RigidBody> bodies = world.BodySpan;
+        GatherBodies(bodies);
+        PrepareConstraints(collisions.Contacts);
+        if (WarmStarting)
+        {
+            WarmStart(collisions.Count);
+        }
+
+        for (int iteration = 0; iteration < _velocityIterations; iteration++)
+        {
+            SolveVelocities(collisions.Count);
+        }
+
+        StoreImpulses(collisions.Contacts);
+        ScatterVelocities(bodies);
+    }
+
+    /// <inheritdoc />
+    public void ResolvePositions(World world, CollisionData collisions, float dt)
+    {
+        Guard.NotNull(world, nameof(world));
+        Guard.NotNull(collisions, nameof(collisions));
+        if (_positionIterations == 0 || collisions.Count == 0)
+        {
+            return;
+        }
+
+        ReadOnlySpan<RigidBody> bodies = world.BodySpan;
+        for (int i = 0; i < bodies.Length; i++)
+        {
+            _positions[i + 1] = bodies[i].position;
+        }
+
+        Span<Contact> contacts = collisions.Contacts;
+        for (int iteration = 0; iteration < _positionIterations; iteration++)
+        {
+            for (int i = 0; i < contacts.Length; i++)
+            {
+                CorrectPosition(ref _constraints[i], contacts[i]);
+            }
+        }
+
+        for (int i = 0; i < bodies.Length; i++)
+        {
+            if (bodies[i].IsDynamic)
+            {
+                bodies[i].position = _positions[i + 1];
+            }
+        }
+    }
+
+    /// <summary>Copies the world's bodies into a contiguous array; slot 0 is the ground (all zero).</summary>
+    private void GatherBodies(ReadOnlySpan<RigidBody> bodies)
+    {
+        EnsureCapacity(ref _bodies, bodies.Length + 1);
+        EnsureCapacity(ref _positions, bodies.Length + 1);
+        _bodies[0] = default;
+        _positions[0] = Vector3.Zero;
+        for (int i = 0; i < bodies.Length; i++)
+        {
+            _bodies[i + 1] = VelocityState.Of(bodies[i]);
+            _positions[i + 1] = bodies[i].position;
+        }
+    }
+
+    private void PrepareConstraints(Span<Contact> contacts)
+    {
+        EnsureCapacity(ref _constraints, contacts.Length);
+        for (int i = 0; i < contacts.Length; i++)
+        {
+            ref readonly Contact contact = ref contacts[i];
+            ref Constraint c = ref _constraints[i];
+            c.A = SlotOf(contact.BodyA);
+            c.B = SlotOf(contact.BodyB);
+            ref VelocityState a = ref _bodies[c.A];
+            ref VelocityState b = ref _bodies[c.B];
+
+            c.Normal = contact.Normal;
+            Vectors.Tangents(c.Normal, out c.Tangent1, out c.Tangent2);
+            c.RA = contact.Point - _positions[c.A]; // r_1 = p − c_1 (eq. 16)
+            c.RB = contact.Point - _positions[c.B];
+            c.NormalMass = InverseOrZero(ImpulseMath.EffectiveMassDenominator(a, b, c.RA, c.RB, c.Normal)); // eq. 16
+            c.TangentMass1 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(a, b, c.RA, c.RB, c.Tangent1));
+            c.TangentMass2 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(a, b, c.RA, c.RB, c.Tangent2));
+            c.Friction = _mixing.Friction(contact, _friction);
+
+            // Eq. 9: the bounce target −ε v_n0, from the approach velocity before the step.
+            float approach = contact.ApproachVelocity;
+            c.TargetVelocity = approach < -_restitutionThreshold ? -_mixing.Restitution(contact, _restitution) * approach : 0f;
+
+            c.NormalImpulse = 0;
+            c.FrictionImpulse1 = 0;
+            c.FrictionImpulse2 = 0;
+            if (WarmStarting && _cache.TryGet(contact.Key, out float normalImpulse, out Vector3 frictionImpulse))
+            {
+                c.NormalImpulse = normalImpulse;
+                c.FrictionImpulse1 = Vector3.Dot(frictionImpulse, c.Tangent1);
+                c.FrictionImpulse2 = Vector3.Dot(frictionImpulse, c.Tangent2);
+                ClampFriction(ref c);
+            }
+        }
+    }
+
+    private void WarmStart(int count)
+    {
+        for (int i = 0; i < count; i++)
+        {
+            ref Constraint c = ref _constraints[i];
+            Vector3 impulse = c.NormalImpulse * c.Normal + c.FrictionImpulse1 * c.Tangent1 + c.FrictionImpulse2 * c.Tangent2;
+            ImpulseMath.Apply(ref _bodies[c.A], ref _bodies[c.B], c.RA, c.RB, impulse);
+        }
+    }
+
+    /// <summary>One Gauss–Seidel sweep: friction, then the normal impulse, of every contact.</summary>
+    private void SolveVelocities(int count)
+    {
+        for (int i = 0; i < count; i++)
+        {
+            ref Constraint c = ref _constraints[i];
+            ref VelocityState a = ref _bodies[c.A];
+            ref VelocityState b = ref _bodies[c.B];
+
+            // Tangential impulses (Coulomb friction), accumulated and clamped to the disc |P_t| ≤ μ P_n.
+            Vector3 relative = ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB); // eq. 13–14
+            float old1 = c.FrictionImpulse1, old2 = c.FrictionImpulse2;
+            c.FrictionImpulse1 -= c.TangentMass1 * Vector3.Dot(relative, c.Tangent1);
+            c.FrictionImpulse2 -= c.TangentMass2 * Vector3.Dot(relative, c.Tangent2);
+            ClampFriction(ref c);
+            Vector3 frictionDelta = (c.FrictionImpulse1 - old1) * c.Tangent1 + (c.FrictionImpulse2 - old2) * c.Tangent2;
+            ImpulseMath.Apply(ref a, ref b, c.RA, c.RB, frictionDelta);
+
+            // Normal impulse (eq. 16 with the bounce target), accumulated and clamped to ≥ 0.
+            relative = ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB);
+            float normalVelocity = Vector3.Dot(relative, c.Normal);
+            float oldNormal = c.NormalImpulse;
+            c.NormalImpulse = MathF.Max(oldNormal - c.NormalMass * (normalVelocity - c.TargetVelocity), 0f);
+            ImpulseMath.Apply(ref a, ref b, c.RA, c.RB, (c.NormalImpulse - oldNormal) * c.Normal);
+        }
+    }
+
+    private void StoreImpulses(Span<Contact> contacts)
+    {
+        _cache.BeginStep(contacts.Length);
+        for (int i = 0; i < contacts.Length; i++)
+        {
+            ref Constraint c = ref _constraints[i];
+            Vector3 friction = c.FrictionImpulse1 * c.Tangent1 + c.FrictionImpulse2 * c.Tangent2;
+            _cache.Store(contacts[i].Key, c.NormalImpulse, friction);
+            contacts[i].NormalImpulse = c.NormalImpulse;
+            contacts[i].TangentImpulse = friction.Length();
+        }
+
+        _cache.EndStep();
+    }
+
+    private void ScatterVelocities(ReadOnlySpan<RigidBody> bodies)
+    {
+        for (int i = 0; i < bodies.Length; i++)
+        {
+            _bodies[i + 1].StoreTo(bodies[i]);
+        }
+    }
+
+    /// <summary>
+    /// Listing 2 as a Gauss–Seidel position sweep: measure the contact at the current positions and push the
+    /// bodies apart along the normal, split by inverse mass, by a bounded share of the depth beyond the slop.
+    /// </summary>
+    private void CorrectPosition(ref Constraint c, in Contact contact)
+    {
+        float inverseMassSum = _bodies[c.A].InverseMass + _bodies[c.B].InverseMass;
+        if (inverseMassSum == 0)
+        {
+            return;
+        }
+
+        ref Vector3 positionA = ref _positions[c.A];
+        ref Vector3 positionB = ref _positions[c.B];
+        float penetration;
+        Vector3 normal;
+        if (contact.IsPlaneContact)
+        {
+            normal = contact.Normal;
+            penetration = ContactGeometry.PlanePenetration(positionA, contact.BodyA.radius, normal, contact.PlaneOffset);
+        }
+        else
+        {
+            penetration = ContactGeometry.CirclePenetration(positionA, contact.BodyA.radius, positionB, contact.BodyB.radius, out normal);
+        }
+
+        float correction = MathF.Min(_correctionFactor * (penetration - _slop), _maxCorrection);
+        if (correction <= 0)
+        {
+            return;
+        }
+
+        float share = correction / inverseMassSum;
+        positionA += normal * (share * _bodies[c.A].InverseMass);
+        positionB -= normal * (share * _bodies[c.B].InverseMass);
+    }
+
+    private static void ClampFriction(ref Constraint c)
+    {
+        float limit = c.Friction * c.NormalImpulse;
+        float squared = c.FrictionImpulse1 * c.FrictionImpulse1 + c.FrictionImpulse2 * c.FrictionImpulse2;
+        if (squared > limit * limit)
+        {
+            float scale = squared > 0 ? limit / MathF.Sqrt(squared) : 0f;
+            c.FrictionImpulse1 *= scale;
+            c.FrictionImpulse2 *= scale;
+        }
+    }
+
+    private static int SlotOf(RigidBody body) => body.index + 1; // the ground (index −1) maps to slot 0
+
+    private static float InverseOrZero(float denominator) => denominator > 0 ? 1f / denominator : 0f;
+
+    private static void EnsureCapacity<T>(ref T[] array, int needed)
+    {
+        if (array.Length < needed)
+        {
+            Array.Resize(ref array, Math.Max(needed, array.Length * 2));
+        }
+    }
+
+    private struct Constraint
+    {
+        public int A, B;
+        public Vector3 RA, RB;
+        public Vector3 Normal, Tangent1, Tangent2;
+        public float NormalMass, TangentMass1, TangentMass2;
+        public float TargetVelocity;
+        public float Friction;
+        public float NormalImpulse, FrictionImpulse1, FrictionImpulse2;
+    }
+}
