@@ -10,14 +10,16 @@ namespace SimpleDynamics.Collision;
 public sealed class BruteForceDetector : ICollisionDetector
 {
     /// <inheritdoc />
-    public void FindContacts(ReadOnlySpan<RigidBody> bodies, CollisionData collisions)
+    public void FindContacts(ReadOnlySpan<RigidBody> bodies, CollisionData collisions, float margin = 0f, float lookahead = 0f)
     {
         Guard.NotNull(collisions, nameof(collisions));
+        Guard.NonNegative(margin, nameof(margin));
+        Guard.NonNegative(lookahead, nameof(lookahead));
         for (int i = 0; i < bodies.Length; i++)
         {
             for (int j = i + 1; j < bodies.Length; j++)
             {
-                if (ContactGeometry.TryCollide(bodies[i], bodies[j], out Contact contact))
+                if (ContactGeometry.TryCollide(bodies[i], bodies[j], margin, lookahead, out Contact contact))
                 {
                     collisions.Add(contact);
                 }

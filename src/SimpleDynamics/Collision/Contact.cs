@@ -47,6 +47,12 @@ public struct Contact
     /// <summary>Size of the tangential (friction) impulse (N·s) applied in the last step.</summary>
     public float TangentImpulse;
 
+    /// <summary>
+    /// True once a single-pair responder has answered this contact in this step, so that it bounces once per
+    /// step however many substeps hold it.
+    /// </summary>
+    internal bool Answered;
+
     /// <summary>Identifies the pair across steps (contact persistence for warm starting).</summary>
     internal ulong Key;
 
@@ -76,6 +82,7 @@ public struct Contact
         ApproachVelocity = Vector3.Dot(bodyA.VelocityAt(point) - bodyB.VelocityAt(point), normal);
         NormalImpulse = 0;
         TangentImpulse = 0;
+        Answered = false;
         Key = PairKey(bodyA.Id, bodyB.Id);
         PlaneIndex = -1;
         PlaneOffset = 0;

@@ -38,7 +38,20 @@ public static class ContactGeometry
     /// True when the bounding circles of two bodies overlap (d &lt; r_A + r_B) and the pair can collide (at least
     /// one is dynamic). Fills a contact with A = <paramref name="a"/>, B = <paramref name="b"/>.
     /// </summary>
-    public static bool TryCollide(RigidBody a, RigidBody b, out Contact contact)
+    public static bool TryCollide(RigidBody a, RigidBody b, out Contact contact) => TryCollide(a, b, 0f, 0f, out contact);
+
+    /// <summary>
+    /// True when the pair can collide (at least one body is dynamic) and the gap between their circles is less
+    /// than <paramref name="margin"/> plus the distance both bodies can travel in <paramref name="lookahead"/>
+    /// seconds at their present speeds. With margin and lookahead 0 this is the overlap test d &lt; r_A + r_B.
+    /// A reported pair with a gap is a speculative contact (negative <see cref="Contact.Penetration"/>): the
+    /// solver then lets the bodies close the gap but not overlap.
+    /// </summary>
+    /// <remarks>
+    /// The speeds, not only the closing speed, decide: two balls falling side by side onto the ground close
+    /// nothing until the lower one is stopped, partway through the step; then the upper one runs into it.
+    /// </remarks>
+    public static bool TryCollide(RigidBody a, RigidBody b, float margin, float lookahead, out Contact contact)
     {
         contact = default;
         if (!a.IsDynamic && !b.IsDynamic)
@@ -46,20 +59,24 @@ public static class ContactGeometry
             return false; // two infinite masses: nothing to resolve
         }
 
-        float radii = a.radius + b.radius;
-        if (Vector3.DistanceSquared(a.position, b.position) >= radii * radii)
+        float reach = a.radius + b.radius + margin + lookahead * (a.linearVelocity.Length() + b.linearVelocity.Length());
+        if (Vector3.DistanceSquared(a.position, b.position) >= reach * reach)
         {
             return false;
         }
 
         float penetration = CirclePenetration(a.position, a.radius, b.position, b.radius, out Vector3 normal);
+
         Vector3 point = a.position - normal * (a.radius - 0.5f * penetration);
         contact = new Contact(a, b, point, normal, penetration);
         return true;
     }
 
-    /// <summary>True when a dynamic body's circle reaches into a plane; fills the contact (B = ground).</summary>
-    public static bool TryCollide(RigidBody body, in StaticPlane plane, int planeIndex, RigidBody ground, out Contact contact)
+    /// <summary>
+    /// True when a dynamic body's circle reaches into a plane, or comes within <paramref name="margin"/> plus
+    /// the distance it can travel in <paramref name="lookahead"/> seconds; fills the contact (B = ground).
+    /// </summary>
+    public static bool TryCollide(RigidBody body, in StaticPlane plane, int planeIndex, RigidBody ground, float margin, float lookahead, out Contact contact)
     {
         contact = default;
         if (!body.IsDynamic)
@@ -68,7 +85,7 @@ public static class ContactGeometry
         }
 
         float penetration = PlanePenetration(body.position, body.radius, plane.Normal, plane.Offset);
-        if (penetration <= 0)
+        if (-penetration >= margin + lookahead * body.linearVelocity.Length())
         {
             return false;
         }

@@ -9,6 +9,12 @@ namespace SimpleDynamics.Collision;
 /// </summary>
 public interface ICollisionDetector
 {
-    /// <summary>Adds one contact per overlapping pair of <paramref name="bodies"/> to <paramref name="collisions"/>.</summary>
-    void FindContacts(ReadOnlySpan<RigidBody> bodies, CollisionData collisions);
+    /// <summary>
+    /// Adds to <paramref name="collisions"/> one contact per pair of <paramref name="bodies"/> that
+    /// <see cref="ContactGeometry.TryCollide(RigidBody, RigidBody, float, float, out Contact)"/> accepts: with
+    /// <paramref name="margin"/> (m) and <paramref name="lookahead"/> (s) both 0 (the defaults), exactly the
+    /// overlapping pairs; otherwise also those whose gap is less than the margin plus what they close within
+    /// the lookahead.
+    /// </summary>
+    void FindContacts(ReadOnlySpan<RigidBody> bodies, CollisionData collisions, float margin = 0f, float lookahead = 0f);
 }

@@ -35,32 +35,39 @@ public sealed class SpatialHashDetector : ICollisionDetector
     private int _oversizedCount;
 
     /// <inheritdoc />
-    public void FindContacts(ReadOnlySpan<RigidBody> bodies, CollisionData collisions)
+    public void FindContacts(ReadOnlySpan<RigidBody> bodies, CollisionData collisions, float margin = 0f, float lookahead = 0f)
     {
         Guard.NotNull(collisions, nameof(collisions));
+        Guard.NonNegative(margin, nameof(margin));
+        Guard.NonNegative(lookahead, nameof(lookahead));
         int n = bodies.Length;
         if (n < 2)
         {
             return;
         }
 
-        float inverseCellSize = GatherBounds(bodies);
+        float inverseCellSize = GatherBounds(bodies, 0.5f * margin, lookahead);
         int entryCount = CountEntries(n, inverseCellSize);
         int bucketMask = PrepareBuckets(entryCount);
         FillBuckets(n, bucketMask);
-        FindPairsInBuckets(bodies, bucketMask, collisions, inverseCellSize);
-        FindPairsWithOversized(bodies, collisions);
+        FindPairsInBuckets(bodies, bucketMask, collisions, inverseCellSize, margin, lookahead);
+        FindPairsWithOversized(bodies, collisions, margin, lookahead);
     }
 
-    private float GatherBounds(ReadOnlySpan<RigidBody> bodies)
+    /// <summary>
+    /// Copies centres and radii, each radius grown by half the margin and by the distance the body travels in
+    /// the lookahead, so that every pair the exact test may accept shares a cell.
+    /// </summary>
+    private float GatherBounds(ReadOnlySpan<RigidBody> bodies, float halfMargin, float lookahead)
     {
         EnsureCapacity(ref _bounds, bodies.Length);
         double radiusSum = 0;
         for (int i = 0; i < bodies.Length; i++)
         {
             RigidBody body = bodies[i];
-            _bounds[i] = new Bounds { Centre = body.position, Radius = body.radius };
-            radiusSum += body.radius;
+            float reach = body.radius + halfMargin + lookahead * body.linearVelocity.Length();
+            _bounds[i] = new Bounds { Centre = body.position, Radius = reach };
+            radiusSum += reach;
         }
 
         float cellSize = (float)(2 * radiusSum / bodies.Length);
@@ -161,7 +168,7 @@ public sealed class SpatialHashDetector : ICollisionDetector
         _bucketStart[0] = 0;
     }
 
-    private void FindPairsInBuckets(ReadOnlySpan<RigidBody> bodies, int bucketMask, CollisionData collisions, float inverseCellSize)
+    private void FindPairsInBuckets(ReadOnlySpan<RigidBody> bodies, int bucketMask, CollisionData collisions, float inverseCellSize, float margin, float lookahead)
     {
         for (int k = 0; k <= bucketMask; k++)
         {
@@ -183,7 +190,7 @@ public sealed class SpatialHashDetector : ICollisionDetector
                         continue; // this pair is reported in another cell
                     }
 
-                    if (ContactGeometry.TryCollide(bodies[i], bodies[j], out Contact contact))
+                    if (ContactGeometry.TryCollide(bodies[i], bodies[j], margin, lookahead, out Contact contact))
                     {
                         collisions.Add(contact);
                     }
@@ -192,7 +199,7 @@ public sealed class SpatialHashDetector : ICollisionDetector
         }
     }
 
-    private void FindPairsWithOversized(ReadOnlySpan<RigidBody> bodies, CollisionData collisions)
+    private void FindPairsWithOversized(ReadOnlySpan<RigidBody> bodies, CollisionData collisions, float margin, float lookahead)
     {
         for (int o = 0; o < _oversizedCount; o++)
         {
@@ -206,7 +213,7 @@ public sealed class SpatialHashDetector : ICollisionDetector
                 }
 
                 int a = Math.Min(big, j), b = Math.Max(big, j);
-                if (ContactGeometry.TryCollide(bodies[a], bodies[b], out Contact contact))
+                if (ContactGeometry.TryCollide(bodies[a], bodies[b], margin, lookahead, out Contact contact))
                 {
                     collisions.Add(contact);
                 }

@@ -13,42 +13,57 @@ public sealed partial class World
     /// <remarks>
     /// The pipeline:
     /// <list type="number">
-    /// <item>detect: bounding circles against each other and against the planes (§2.1);</item>
-    /// <item>integrate velocities: gravity, forces and torques, semi-implicit Euler;</item>
-    /// <item>resolve velocities: the responder's impulses (eq. 2 or eq. 5–16);</item>
-    /// <item>integrate positions and orientations with the new velocities;</item>
+    /// <item>detect: bounding circles against each other and against the planes (§2.1), including pairs that
+    ///   are about to touch within this step (speculative contacts, see <see cref="ContactMargin"/>);</item>
+    /// <item>then <see cref="Substeps"/> times, with h = dt / substeps:
+    ///   integrate velocities (gravity, forces, torques; semi-implicit Euler),
+    ///   resolve velocities (the responder's impulses, eq. 2 or eq. 5–16),
+    ///   integrate positions and orientations with the new velocities,
+    ///   and measure the contacts again;</item>
     /// <item>resolve positions: the responder's projection / position correction (listing 2);</item>
     /// <item>measure the contacts again for <see cref="Collisions"/> and the diagnostics.</item>
     /// </list>
     /// Detection comes before the velocity update (positions are the same either way) so that each contact
     /// records its approach velocity from before this step's gravity: a bounce then returns the speed the
     /// body arrived with, not that plus g·dt, which would add energy at every bounce.
+    /// Substeps make piles stiff: a body sinks into its support by about g·h² per substep before the solver
+    /// catches it, so four substeps sink sixteen times less than one step ("Small Steps in Physics
+    /// Simulation", Macklin et al., SCA 2019; Box2D v3 steps the same way).
     /// </remarks>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="dt"/> is not a positive, finite number; nothing changes.</exception>
     public void Step(float dt)
     {
         Guard.Positive(dt, nameof(dt));
-        DetectCollisions();
-        IntegrateVelocities(dt);
-        Responder.ResolveVelocities(this, Collisions, dt);
-        IntegratePositions(dt);
-        MeasureContacts();
-        Responder.ResolvePositions(this, Collisions, dt);
-        MeasureContacts();
+        DetectCollisions(dt);
+        float h = dt / _substeps;
+        for (Substep = 0; Substep < _substeps; Substep++)
+        {
+            IntegrateVelocities(h);
+            Responder.ResolveVelocities(this, Collisions, h);
+            IntegratePositions(h);
+            MeasureContacts();
+            Responder.ResolvePositions(this, Collisions, h);
+            MeasureContacts();
+        }
+
+        Substep = 0;
         ClearForces();
         Time += dt;
     }
 
-    private void DetectCollisions()
+    /// <summary>The substep being run (0 to <see cref="Substeps"/> − 1), for responders; 0 between steps.</summary>
+    public int Substep { get; private set; }
+
+    private void DetectCollisions(float dt)
     {
         Collisions.Clear();
-        Detector.FindContacts(BodySpan, Collisions);
+        Detector.FindContacts(BodySpan, Collisions, _contactMargin, dt);
         ReadOnlySpan<StaticPlane> planes = Planes;
         foreach (RigidBody body in BodySpan)
         {
             for (int p = 0; p < planes.Length; p++)
             {
-                if (ContactGeometry.TryCollide(body, planes[p], p, Ground, out Contact contact))
+                if (ContactGeometry.TryCollide(body, planes[p], p, Ground, _contactMargin, dt, out Contact contact))
                 {
                     Collisions.Add(contact);
                 }

@@ -3,9 +3,13 @@ using SimpleDynamics.Collision;
 namespace SimpleDynamics.Response;
 
 /// <summary>
-/// Base of the tutorial's responders, which answer one pair at a time, each contact once per step, in
+/// Base of the tutorial's responders, which answer one pair at a time, each contact once per (sub)step, in
 /// detection order. Each can also be used on a single <see cref="Contact"/> directly.
 /// </summary>
+/// <remarks>
+/// Within a step the world measures contacts again after each substep; a contact whose bodies no longer touch
+/// (penetration &lt; 0) is skipped.
+/// </remarks>
 public abstract class PairwiseResponder : ICollisionResponder
 {
     /// <summary>Answers one contact in the velocity pass; does nothing unless overridden.</summary>
@@ -24,7 +28,10 @@ public abstract class PairwiseResponder : ICollisionResponder
         Guard.NotNull(collisions, nameof(collisions));
         foreach (ref Contact contact in collisions.Contacts)
         {
-            ResolveVelocity(ref contact);
+            if (contact.Penetration >= 0)
+            {
+                ResolveVelocity(ref contact);
+            }
         }
     }
 

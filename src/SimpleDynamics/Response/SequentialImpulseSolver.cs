@@ -17,9 +17,14 @@ namespace SimpleDynamics.Response;
 /// normal impulse is clamped to ≥ 0 (a contact pushes, never pulls) and the accumulated friction impulse to the
 /// disc of radius μ × normal impulse (Coulomb). Warm starting applies last step's accumulated impulses first, so
 /// a resting pile starts each step almost solved.</para>
-/// <para><b>Restitution</b> (eq. 9) targets a relative normal velocity of −ε v_n0, where v_n0 is the approach
-/// velocity from before the step (<see cref="Contact.ApproachVelocity"/>). Below
-/// <see cref="RestitutionThreshold"/> ε acts as 0, so slow contacts come to rest instead of jittering.</para>
+/// <para><b>Speculative contacts.</b> A contact whose bodies have not met yet (negative penetration, see
+/// <see cref="World.ContactMargin"/>) may close its gap within the substep but no more, so the bodies meet
+/// exactly instead of overlapping.</para>
+/// <para><b>Restitution</b> (eq. 9) follows Poisson's hypothesis: after the sweeps that stop every approach
+/// (compression), each contact gets ε times its compression impulse back, all at once. For a lone pair that is
+/// exactly eq. 9; for simultaneous contacts it never adds energy when ε ≤ 1. Collisions set off by a bounce are
+/// resolved in further rounds. Below <see cref="RestitutionThreshold"/> ε acts as 0, so slow contacts come to
+/// rest instead of jittering.</para>
 /// <para><b>Position pass.</b> After positions are integrated, penetration deeper than <see cref="Slop"/> is
 /// removed by the projection of listing 2, split by inverse mass, over <see cref="PositionIterations"/>
 /// Gauss–Seidel sweeps (Box2D's non-linear Gauss–Seidel), each moving a contact by at most
@@ -28,17 +33,22 @@ namespace SimpleDynamics.Response;
 /// </remarks>
 public sealed class SequentialImpulseSolver : ICollisionResponder
 {
+    /// <summary>At most this many rounds of collisions set off by bounces are resolved per substep.</summary>
+    private const int MaxCollisionRounds = 8;
+
     private readonly ContactCache _cache = new();
     private VelocityState[] _bodies = new VelocityState[16];
     private Vector3[] _positions = new Vector3[16];
     private Constraint[] _constraints = new Constraint[16];
+    private int[] _order = new int[16];
+    private float[] _heights = new float[16];
 
-    private int _velocityIterations = 8;
-    private int _positionIterations = 4;
+    private int _velocityIterations = 4;
+    private int _positionIterations = 2;
     private float _restitution;
     private float _friction;
     private float _restitutionThreshold = 0.5f;
-    private float _slop = 0.005f;
+    private float _slop = 0.0005f;
     private float _correctionFactor = 0.4f;
     private float _maxCorrection = 0.2f;
     private MaterialMixing _mixing = MaterialMixing.Default;
@@ -50,7 +60,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         Friction = friction;
     }
 
-    /// <summary>Velocity iterations per step (≥ 1). More iterations: stiffer piles, more time.</summary>
+    /// <summary>Velocity iterations per substep (≥ 1, default 4). More iterations: stiffer piles, more time.</summary>
     public int VelocityIterations
     {
         get => _velocityIterations;
@@ -61,7 +71,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         }
     }
 
-    /// <summary>Position-correction sweeps per step (≥ 0; 0 turns the correction off).</summary>
+    /// <summary>Position-correction sweeps per step (≥ 0, default 2; 0 turns the correction off).</summary>
     public int PositionIterations
     {
         get => _positionIterations;
@@ -108,7 +118,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         }
     }
 
-    /// <summary>Penetration (m, ≥ 0) left uncorrected, so resting contacts stay in touch. Default 5 mm.</summary>
+    /// <summary>Penetration (m, ≥ 0) left uncorrected, so resting contacts stay in touch. Default 0.5 mm.</summary>
     public float Slop
     {
         get => _slop;
@@ -157,21 +167,25 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     public void ResetWarmStart() => _cache.Clear();
 
     /// <inheritdoc />
+    /// <remarks>Called once per substep; <paramref name="dt"/> is the substep.</remarks>
     public void ResolveVelocities(World world, CollisionData collisions, float dt)
     {
         Guard.NotNull(world, nameof(world));
         Guard.NotNull(collisions, nameof(collisions));
         ReadOnlySpan<RigidBody> bodies = world.BodySpan;
         GatherBodies(bodies);
-        PrepareConstraints(collisions.Contacts);
+        PrepareConstraints(collisions.Contacts, dt);
+        OrderAlongGravity(collisions.Contacts, world.Gravity);
         if (WarmStarting)
         {
             WarmStart(collisions.Count);
         }
 
-        for (int iteration = 0; iteration < _velocityIterations; iteration++)
+        int count = collisions.Count;
+        Sweeps(count);
+        for (int round = 0; round < MaxCollisionRounds && Restitute(count); round++)
         {
-            SolveVelocities(collisions.Count);
+            Sweeps(count);
         }
 
         StoreImpulses(collisions.Contacts);
@@ -197,8 +211,9 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         Span<Contact> contacts = collisions.Contacts;
         for (int iteration = 0; iteration < _positionIterations; iteration++)
         {
-            for (int i = 0; i < contacts.Length; i++)
+            for (int k = 0; k < contacts.Length; k++)
             {
+                int i = _order[k];
                 CorrectPosition(ref _constraints[i], contacts[i]);
             }
         }
@@ -226,12 +241,12 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         }
     }
 
-    private void PrepareConstraints(Span<Contact> contacts)
+    private void PrepareConstraints(Span<Contact> contacts, float dt)
     {
         EnsureCapacity(ref _constraints, contacts.Length);
         for (int i = 0; i < contacts.Length; i++)
         {
-            ref readonly Contact contact = ref contacts[i];
+            ref Contact contact = ref contacts[i];
             ref Constraint c = ref _constraints[i];
             c.A = SlotOf(contact.BodyA);
             c.B = SlotOf(contact.BodyB);
@@ -247,9 +262,12 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
             c.TangentMass2 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(a, b, c.RA, c.RB, c.Tangent2));
             c.Friction = _mixing.Friction(contact, _friction);
 
-            // Eq. 9: the bounce target −ε v_n0, from the approach velocity before the step.
-            float approach = contact.ApproachVelocity;
-            c.TargetVelocity = approach < -_restitutionThreshold ? -_mixing.Restitution(contact, _restitution) * approach : 0f;
+            // A contact still open (penetration < 0, speculative) may close its gap within this substep but no
+            // more; a touching one may not approach. Bounces are added by Restitute.
+            c.SpeculativeVelocity = contact.Penetration < 0 ? contact.Penetration / dt : 0f;
+            c.TargetVelocity = c.SpeculativeVelocity;
+            c.Restitution = _mixing.Restitution(contact, _restitution);
+            c.CommittedImpulse = 0;
 
             c.NormalImpulse = 0;
             c.FrictionImpulse1 = 0;
@@ -261,6 +279,28 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
                 c.FrictionImpulse2 = Vector3.Dot(frictionImpulse, c.Tangent2);
                 ClampFriction(ref c);
             }
+
+            c.StartImpulse = c.NormalImpulse;
+        }
+    }
+
+    /// <summary>
+    /// Visits contacts from the bottom of a pile upwards (along gravity), so that each Gauss–Seidel sweep carries
+    /// support up through a stack instead of down through it.
+    /// </summary>
+    private void OrderAlongGravity(Span<Contact> contacts, Vector3 gravity)
+    {
+        EnsureCapacity(ref _order, contacts.Length);
+        EnsureCapacity(ref _heights, contacts.Length);
+        for (int i = 0; i < contacts.Length; i++)
+        {
+            _order[i] = i;
+            _heights[i] = -Vector3.Dot(contacts[i].Point, gravity);
+        }
+
+        if (gravity != Vector3.Zero)
+        {
+            Array.Sort(_heights, _order, 0, contacts.Length);
         }
     }
 
@@ -274,31 +314,107 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         }
     }
 
-    /// <summary>One Gauss–Seidel sweep: friction, then the normal impulse, of every contact.</summary>
-    private void SolveVelocities(int count)
+    /// <summary><see cref="VelocityIterations"/> Gauss–Seidel sweeps over every contact, bottom-up.</summary>
+    private void Sweeps(int count)
     {
+        for (int iteration = 0; iteration < _velocityIterations; iteration++)
+        {
+            for (int k = 0; k < count; k++)
+            {
+                SolveContact(ref _constraints[_order[k]]);
+            }
+        }
+    }
+
+    /// <summary>
+    /// One contact's impulses given what all others did so far: friction (Coulomb, accumulated and clamped to
+    /// the disc |P_t| ≤ μ P_n), then the normal impulse of eq. 16 that brings the relative normal velocity to the
+    /// target (0, or for a speculative contact the speed that just closes its gap), accumulated and clamped to
+    /// ≥ the committed impulse (≥ 0: a contact pushes, never pulls).
+    /// </summary>
+    private void SolveContact(ref Constraint c)
+    {
+        ref VelocityState a = ref _bodies[c.A];
+        ref VelocityState b = ref _bodies[c.B];
+
+        Vector3 relative = ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB); // eq. 13–14
+        float old1 = c.FrictionImpulse1, old2 = c.FrictionImpulse2;
+        c.FrictionImpulse1 -= c.TangentMass1 * Vector3.Dot(relative, c.Tangent1);
+        c.FrictionImpulse2 -= c.TangentMass2 * Vector3.Dot(relative, c.Tangent2);
+        ClampFriction(ref c);
+        Vector3 frictionDelta = (c.FrictionImpulse1 - old1) * c.Tangent1 + (c.FrictionImpulse2 - old2) * c.Tangent2;
+        ImpulseMath.Apply(ref a, ref b, c.RA, c.RB, frictionDelta);
+
+        relative = ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB);
+        float normalVelocity = Vector3.Dot(relative, c.Normal);
+        float oldNormal = c.NormalImpulse;
+        c.NormalImpulse = MathF.Max(oldNormal - c.NormalMass * (normalVelocity - c.TargetVelocity), c.CommittedImpulse);
+        ImpulseMath.Apply(ref a, ref b, c.RA, c.RB, (c.NormalImpulse - oldNormal) * c.Normal);
+    }
+
+    /// <summary>
+    /// Restitution (eq. 9) by Poisson's hypothesis, applied to all contacts at once. The sweeps before only kept
+    /// contacts from approaching; a contact that pushed in them has collided. A speculative one was only slowed
+    /// to close its gap within the substep, so first all colliding contacts are stopped completely, solved
+    /// together (the bodies meet at most a substep's travel early); the energy balance below needs every
+    /// colliding contact at rest before the bounce (a contact restituted while still closing its gap loses
+    /// 2 P gap/h of energy). The normal impulse each contact added since
+    /// the last round is then its compression impulse P_c, and restitution adds ε P_c to every contact
+    /// simultaneously. For a lone pair this is exactly eq. 9 (the relative normal velocity becomes −ε times the
+    /// approach); for several contacts at once, compression removes ½ Pᵀ A P of kinetic energy
+    /// (A = J M⁻¹ Jᵀ) and restitution gives back ε² of it, so no round adds energy when ε ≤ 1. A contact whose
+    /// impact speed P_c/m_eff is below <see cref="RestitutionThreshold"/> gets no bounce: a resting contact only
+    /// absorbs what gravity adds in a substep. Impulses are committed: later sweeps may add, never take back.
+    /// A bounce can throw a body against a third one; the caller's next sweeps find that compression and the
+    /// next round bounces it. Returns whether any restitution impulse was applied.
+    /// </summary>
+    private bool Restitute(int count)
+    {
+        // Stop every colliding contact completely; stopping some can make others collide, hence the passes.
+        for (int pass = 0; pass < MaxCollisionRounds && StopCollidingContacts(count); pass++)
+        {
+            Sweeps(count);
+        }
+
+        bool any = false;
+        for (int k = 0; k < count; k++)
+        {
+            ref Constraint c = ref _constraints[_order[k]];
+            float compression = c.NormalImpulse - c.StartImpulse;
+            if (compression > 0 && c.NormalMass > 0 && c.Restitution > 0 && compression / c.NormalMass > _restitutionThreshold)
+            {
+                float bounce = c.Restitution * compression;
+                ImpulseMath.Apply(ref _bodies[c.A], ref _bodies[c.B], c.RA, c.RB, bounce * c.Normal);
+                c.NormalImpulse += bounce;
+                any = true;
+            }
+
+            c.StartImpulse = c.NormalImpulse;
+            c.CommittedImpulse = c.NormalImpulse;
+            c.TargetVelocity = c.SpeculativeVelocity;
+        }
+
+        return any;
+    }
+
+    /// <summary>
+    /// Sets the target of every speculative contact that pushed since the last round to 0 (a full stop);
+    /// returns whether there was any.
+    /// </summary>
+    private bool StopCollidingContacts(int count)
+    {
+        bool any = false;
         for (int i = 0; i < count; i++)
         {
             ref Constraint c = ref _constraints[i];
-            ref VelocityState a = ref _bodies[c.A];
-            ref VelocityState b = ref _bodies[c.B];
-
-            // Tangential impulses (Coulomb friction), accumulated and clamped to the disc |P_t| ≤ μ P_n.
-            Vector3 relative = ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB); // eq. 13–14
-            float old1 = c.FrictionImpulse1, old2 = c.FrictionImpulse2;
-            c.FrictionImpulse1 -= c.TangentMass1 * Vector3.Dot(relative, c.Tangent1);
-            c.FrictionImpulse2 -= c.TangentMass2 * Vector3.Dot(relative, c.Tangent2);
-            ClampFriction(ref c);
-            Vector3 frictionDelta = (c.FrictionImpulse1 - old1) * c.Tangent1 + (c.FrictionImpulse2 - old2) * c.Tangent2;
-            ImpulseMath.Apply(ref a, ref b, c.RA, c.RB, frictionDelta);
-
-            // Normal impulse (eq. 16 with the bounce target), accumulated and clamped to ≥ 0.
-            relative = ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB);
-            float normalVelocity = Vector3.Dot(relative, c.Normal);
-            float oldNormal = c.NormalImpulse;
-            c.NormalImpulse = MathF.Max(oldNormal - c.NormalMass * (normalVelocity - c.TargetVelocity), 0f);
-            ImpulseMath.Apply(ref a, ref b, c.RA, c.RB, (c.NormalImpulse - oldNormal) * c.Normal);
+            if (c.NormalImpulse > c.StartImpulse && c.TargetVelocity < 0)
+            {
+                c.TargetVelocity = 0;
+                any = true;
+            }
         }
+
+        return any;
     }
 
     private void StoreImpulses(Span<Contact> contacts)
@@ -391,7 +507,11 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         public Vector3 RA, RB;
         public Vector3 Normal, Tangent1, Tangent2;
         public float NormalMass, TangentMass1, TangentMass2;
+        public float SpeculativeVelocity;
         public float TargetVelocity;
+        public float Restitution;
+        public float CommittedImpulse;
+        public float StartImpulse;
         public float Friction;
         public float NormalImpulse, FrictionImpulse1, FrictionImpulse2;
     }
