@@ -32,6 +32,38 @@ public class DetectionLaws
     public void SpatialHashDetector_finds_exactly_the_overlapping_pairs() =>
         Check(new SpatialHashDetector(), seed: 402); // one instance for every scene: its reused buffers are tested too
 
+    /// <summary>
+    /// Bodies a million metres out lie beyond the spatial hash's clamped cell range (2^20 cells of 0.7 m): they
+    /// share edge cells, and each overlapping pair must still be found exactly once, and nothing else.
+    /// </summary>
+    [Fact]
+    public void Far_away_bodies_beyond_the_grid_limit_are_found_once()
+    {
+        var bodies = new System.Collections.Generic.List<RigidBody>();
+        for (int i = 0; i < 20; i++)
+        {
+            bodies.Add(new RigidBody(1f, 0.3f, new System.Numerics.Vector3(i, 0, 0)));
+        }
+
+        var a = new RigidBody(1f, 0.5f, new System.Numerics.Vector3(1e6f, 0, 0));
+        var b = new RigidBody(1f, 0.5f, new System.Numerics.Vector3(1e6f + 0.75f, 0, 0));
+        var c = new RigidBody(1f, 0.5f, new System.Numerics.Vector3(1e6f, 5, 0));
+        var d = new RigidBody(1f, 0.5f, new System.Numerics.Vector3(2e6f, 0, 0));
+        var e = RigidBody.CreateStatic(0.5f, new System.Numerics.Vector3(-3e6f, 0.25f, 0));
+        var f = new RigidBody(1f, 0.5f, new System.Numerics.Vector3(-3e6f, 0, 0));
+        bodies.AddRange(new[] { a, b, c, d, e, f });
+        foreach (ICollisionDetector detector in new ICollisionDetector[] { new BruteForceDetector(), new SpatialHashDetector() })
+        {
+            var collisions = new CollisionData();
+            detector.FindContacts(bodies.ToArray(), collisions);
+            Assert.Equal(2, collisions.Count);
+            Assert.Same(a, collisions[0].BodyA.Position.X > 0 ? collisions[0].BodyA : collisions[1].BodyA);
+            var pairs = collisions.Contacts.ToArray().Select(x => (x.BodyA, x.BodyB)).ToList();
+            Assert.Contains((a, b), pairs);
+            Assert.Contains((e, f), pairs);
+        }
+    }
+
     private static void Check(ICollisionDetector detector, ulong seed, [System.Runtime.CompilerServices.CallerMemberName] string name = "") =>
         PropertyCheck.Run(Scenes, scene =>
         {
