@@ -210,6 +210,32 @@ public class ImpulseResponderLaws
             }
         }, seed: 109);
 
+    /// <summary>
+    /// Per-body ε (documented mixing: a body without one takes the responder's; the pair's ε is the maximum)
+    /// decides the bounce: v_n' = −max(ε_A, ε_B) v_n.
+    /// </summary>
+    [Fact]
+    public void Per_body_restitution_mixes_by_the_maximum() =>
+        PropertyCheck.Run(
+            from c in Generators.Contact(infinite: InfiniteMass.None)
+            from eA in Gen.OneOf(Gen.Constant<float?>(null), Generators.UniformF(0, 1).Select(e => (float?)e))
+            from eB in Gen.OneOf(Gen.Constant<float?>(null), Generators.UniformF(0, 1).Select(e => (float?)e))
+            select (c, eA, eB),
+            x =>
+            {
+                (ContactCase c, float? eA, float? eB) = x;
+                (RigidBody a, RigidBody b) = c.BuildBodies();
+                a.Restitution = eA;
+                b.Restitution = eB;
+                Contact contact = c.BuildContact(a, b);
+                new ImpulseCollisionResponder(c.Restitution, 0f).ResolveVelocity(ref contact);
+                double e = eA is null && eB is null ? c.Restitution : Math.Max(eA ?? c.Restitution, eB ?? c.Restitution);
+                D3 p = D3.From(c.Point), n = D3.From(c.Normal);
+                double after = D3.Dot(Measure.VelocityAt(a, p) - Measure.VelocityAt(b, p), n);
+                double scale = Measure.SpeedScaleAt(a, p) + Measure.SpeedScaleAt(b, p) + Math.Abs(c.NormalVelocity());
+                Law.Near(-e * c.NormalVelocity(), after, AngularTolerance * scale, $"v_n' with ε_A = {eA}, ε_B = {eB}, responder ε = {c.Restitution}");
+            }, seed: 110);
+
     internal static void AssertUnchanged(BodySpec spec, RigidBody body)
     {
         Law.Holds(body.Position == spec.Position, $"position changed: {spec.Position} → {body.Position}");
