@@ -223,6 +223,14 @@ public static class Measure
         D3.From(b.LinearVelocity).Length + D3.From(b.AngularVelocity).Length * (point - D3.From(b.Position)).Length;
 
     /// <summary>
+    /// Scale of a normal impulse's float error: m_eff (1 + ε) times the speeds at the contact. The approach speed
+    /// v_n is a difference of velocities of size |v| + |ω||r|; when it is small it carries their rounding
+    /// (cancellation), so J's error is relative to this, not to J itself.
+    /// </summary>
+    public static double ImpulseScale(RigidBody a, RigidBody b, D3 point, D3 normal, double restitution) =>
+        (1 + restitution) * (SpeedScaleAt(a, point) + SpeedScaleAt(b, point)) / Eq16Denominator(a, b, point, normal);
+
+    /// <summary>
     /// Eq. 16's denominator along a unit direction d, in double with the inverse of the double world inertia:
     /// 1/m_A + 1/m_B + ((I_A⁻¹(r_A × d)) × r_A + (I_B⁻¹(r_B × d)) × r_B)·d. Its inverse is m_eff.
     /// </summary>
