@@ -219,11 +219,22 @@ public sealed class TableTrajectoryWriter : TrajectoryWriter
         return width;
     }
 
-    /// <summary>Enough decimals to tell printed steps apart: 2 for 0.05 s between rows, 4 for 0.0005 s.</summary>
+    /// <summary>
+    /// The decimals that show every step's time exactly: 2 for dt = 0.01 s, 3 for 0.005 s; 4 when dt has no
+    /// short decimal form (1/60 s).
+    /// </summary>
     private static int TimeDecimals(Scene scene)
     {
-        double interval = scene.Dt * (double)scene.Every;
-        return Math.Clamp((int)Math.Ceiling(-Math.Log10(interval) - 1e-9), 2, 6);
+        double dt = scene.Dt;
+        for (int decimals = 2; decimals <= 6; decimals++)
+        {
+            if (Math.Abs(Math.Round(dt, decimals) - dt) <= 1e-6 * dt)
+            {
+                return decimals;
+            }
+        }
+
+        return 4;
     }
 
     private static string Pad(string text, int width) => text.PadLeft(width);
