@@ -1,0 +1,334 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.Numerics;
+using System.Text;
+using SimpleDynamics.Bodies;
+
+namespace SimpleDynamics.Trajectories;
+
+/// <summary>
+/// Writes trajectories: per printed step the time, each body's position, velocity and angular velocity, and the
+/// world's diagnostics. A run calls <see cref="BeginScene"/>, then <see cref="WriteStep"/> per printed step,
+/// then <see cref="EndScene"/>, once per scene.
+/// </summary>
+public abstract class TrajectoryWriter
+{
+    /// <summary>Creates the writer for <paramref name="format"/>.</summary>
+    public static TrajectoryWriter Create(OutputFormat format, System.IO.TextWriter output) => format switch
+    {
+        OutputFormat.Table => new TableTrajectoryWriter(output),
+        OutputFormat.Csv => new CsvTrajectoryWriter(output),
+        _ => throw new ArgumentOutOfRangeException(nameof(format), format, "Unknown format."),
+    };
+
+    /// <summary>Starts a scene.</summary>
+    public abstract void BeginScene(Scene scene);
+
+    /// <summary>Writes the state after <paramref name="step"/> steps.</summary>
+    public abstract void WriteStep(Scene scene, int step);
+
+    /// <summary>Ends a scene with what the whole run did.</summary>
+    public abstract void EndScene(Scene scene, RunSummary summary);
+
+    /// <summary>
+    /// The centre of mass of the dynamic bodies, the velocity of the centre of mass (Σ m v / Σ m), their mean
+    /// angular velocity, and the largest speed: what a many-body scene prints instead of every body.
+    /// </summary>
+    protected static (Vector3 Position, Vector3 Velocity, Vector3 AngularVelocity, float MaxSpeed, int Count) CentreOfMass(World world)
+    {
+        double mass = 0;
+        Vector3 weighted = Vector3.Zero, momentum = Vector3.Zero, spin = Vector3.Zero;
+        float maxSpeed = 0;
+        int count = 0;
+        foreach (RigidBody body in world.Bodies)
+        {
+            if (!body.IsDynamic)
+            {
+                continue;
+            }
+
+            count++;
+            mass += body.Mass;
+            weighted += body.Mass * body.Position;
+            momentum += body.Mass * body.LinearVelocity;
+            spin += body.AngularVelocity;
+            maxSpeed = MathF.Max(maxSpeed, body.LinearVelocity.Length());
+        }
+
+        if (count == 0)
+        {
+            return (Vector3.Zero, Vector3.Zero, Vector3.Zero, 0, 0);
+        }
+
+        float m = (float)mass;
+        return (weighted / m, momentum / m, spin / count, maxSpeed, count);
+    }
+}
+
+/// <summary>
+/// Aligned columns for a person to read. Each scene starts with '#' lines (what it is, the units), then a
+/// header and one line per body per printed step; the diagnostics fill the first body's line of each step.
+/// A planar scene leaves out z, vz, wx, wy and pz, which stay 0.
+/// </summary>
+public sealed class TableTrajectoryWriter : TrajectoryWriter
+{
+    private const int Width = 9;
+    private readonly System.IO.TextWriter _out;
+    private bool _first = true;
+
+    /// <summary>Writes to <paramref name="output"/>.</summary>
+    public TableTrajectoryWriter(System.IO.TextWriter output) => _out = output;
+
+    /// <inheritdoc />
+    public override void BeginScene(Scene scene)
+    {
+        if (!_first)
+        {
+            _out.WriteLine();
+        }
+
+        _first = false;
+        _out.WriteLine($"# scene: {scene.Name} - {scene.Description}");
+        _out.WriteLine(Format(
+            $"# dt = {scene.Dt} s, {scene.Steps} steps ({scene.Steps * (double)scene.Dt:0.###} s), a row every {scene.Every} steps ({scene.Every * (double)scene.Dt:0.####} s) and the last"));
+        _out.WriteLine(scene.SummaryOnly
+            ? "# per row: the dynamic bodies' centre of mass (m), its velocity (m/s), their largest speed (m/s); then the diagnostics"
+            : "# per row: position (m), velocity (m/s), angular velocity (rad/s); on each step's first line the diagnostics");
+        _out.WriteLine("# diagnostics: KE, PE, E = kinetic, potential, mechanical energy (J); p = linear momentum (kg m/s); contacts; max pen = largest penetration (m)");
+        if (scene.Expectation is not null)
+        {
+            _out.WriteLine($"# expect: {scene.Expectation}");
+        }
+
+        var header = new StringBuilder();
+        header.Append(Pad("time", 8)).Append(' ').Append("body".PadRight(BodyWidth(scene)));
+        string[] motion = scene.SummaryOnly
+            ? (scene.Planar ? new[] { "com x", "com y", "com vx", "com vy", "max |v|" } : new[] { "com x", "com y", "com z", "com vx", "com vy", "com vz", "max |v|" })
+            : (scene.Planar ? new[] { "x", "y", "vx", "vy", "wz" } : new[] { "x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz" });
+        foreach (string column in motion)
+        {
+            header.Append(Pad(column, Width));
+        }
+
+        header.Append("  |");
+        foreach (string column in scene.Planar ? new[] { "KE", "PE", "E", "px", "py" } : new[] { "KE", "PE", "E", "px", "py", "pz" })
+        {
+            header.Append(Pad(column, Width));
+        }
+
+        header.Append(Pad("contacts", Width)).Append(Pad("max pen", Width + 1));
+        _out.WriteLine(header.ToString());
+    }
+
+    /// <inheritdoc />
+    public override void WriteStep(Scene scene, int step)
+    {
+        World world = scene.World;
+        string time = Fixed(world.Time, TimeDecimals(scene)).PadLeft(8);
+        int bodyWidth = BodyWidth(scene);
+        string diagnostics = Diagnostics(scene);
+        if (scene.SummaryOnly)
+        {
+            var (position, velocity, _, maxSpeed, count) = CentreOfMass(world);
+            var line = new StringBuilder();
+            line.Append(time).Append(' ').Append(count.ToString(CultureInfo.InvariantCulture).PadRight(bodyWidth));
+            Append(line, position, scene.Planar);
+            Append(line, velocity, scene.Planar);
+            line.Append(Fixed(maxSpeed, 3).PadLeft(Width));
+            _out.WriteLine(line.Append(diagnostics).ToString());
+            return;
+        }
+
+        for (int i = 0; i < world.Bodies.Count; i++)
+        {
+            RigidBody body = world.Bodies[i];
+            var line = new StringBuilder();
+            line.Append(time).Append(' ').Append(Label(scene, i).PadRight(bodyWidth));
+            Append(line, body.Position, scene.Planar);
+            Append(line, body.LinearVelocity, scene.Planar);
+            if (scene.Planar)
+            {
+                line.Append(Fixed(body.AngularVelocity.Z, 3).PadLeft(Width));
+            }
+            else
+            {
+                Append(line, body.AngularVelocity, planar: false);
+            }
+
+            if (i == 0)
+            {
+                line.Append(diagnostics);
+            }
+
+            _out.WriteLine(line.ToString());
+        }
+    }
+
+    /// <inheritdoc />
+    public override void EndScene(Scene scene, RunSummary summary)
+    {
+        double rise = summary.MaxMechanicalEnergy - summary.StartMechanicalEnergy;
+        _out.WriteLine(Format(
+            $"# summary: E {summary.StartMechanicalEnergy:F3} -> {summary.EndMechanicalEnergy:F3} J (largest rise above the start {Math.Max(0, rise):F4} J), KE {summary.StartKineticEnergy:F3} -> {summary.EndKineticEnergy:F3} J"));
+        _out.WriteLine(Format(
+            $"# summary: largest penetration {summary.MaxPenetration:F4} m ({100 * summary.MaxPenetration / summary.SmallestRadius:F1}% of the smallest radius {summary.SmallestRadius} m)"));
+        if (scene.Planar && summary.LeftPlane)
+        {
+            _out.WriteLine("# warning: the motion left the z = 0 plane; the table does not show z");
+        }
+
+        _out.WriteLine(summary.FirstNonFiniteStep is int bad
+            ? Format($"# warning: a body's state became NaN or infinite at step {bad}")
+            : "# summary: every state finite (no NaN)");
+    }
+
+    private string Diagnostics(Scene scene)
+    {
+        WorldDiagnostics d = scene.World.Diagnostics;
+        var text = new StringBuilder("  |");
+        text.Append(Fixed(d.KineticEnergy, 3).PadLeft(Width));
+        text.Append(Fixed(d.PotentialEnergy, 3).PadLeft(Width));
+        text.Append(Fixed(d.MechanicalEnergy, 3).PadLeft(Width));
+        Append(text, d.LinearMomentum, scene.Planar);
+        text.Append(d.ContactCount.ToString(CultureInfo.InvariantCulture).PadLeft(Width));
+        text.Append(Fixed(d.MaxPenetration, 4).PadLeft(Width + 1));
+        return text.ToString();
+    }
+
+    private static void Append(StringBuilder line, Vector3 v, bool planar)
+    {
+        line.Append(Fixed(v.X, 3).PadLeft(Width)).Append(Fixed(v.Y, 3).PadLeft(Width));
+        if (!planar)
+        {
+            line.Append(Fixed(v.Z, 3).PadLeft(Width));
+        }
+    }
+
+    private static string Label(Scene scene, int index) =>
+        index < scene.Labels.Count ? scene.Labels[index] : (index + 1).ToString(CultureInfo.InvariantCulture);
+
+    private static int BodyWidth(Scene scene)
+    {
+        int width = scene.SummaryOnly ? "bodies".Length : 4;
+        for (int i = 0; i < scene.World.Bodies.Count && !scene.SummaryOnly; i++)
+        {
+            width = Math.Max(width, Label(scene, i).Length);
+        }
+
+        return width;
+    }
+
+    /// <summary>
+    /// The decimals that show every step's time exactly: 2 for dt = 0.01 s, 3 for 0.005 s; 4 when dt has no
+    /// short decimal form (1/60 s).
+    /// </summary>
+    private static int TimeDecimals(Scene scene)
+    {
+        double dt = scene.Dt;
+        for (int decimals = 2; decimals <= 6; decimals++)
+        {
+            if (Math.Abs(Math.Round(dt, decimals) - dt) <= 1e-6 * dt)
+            {
+                return decimals;
+            }
+        }
+
+        return 4;
+    }
+
+    private static string Pad(string text, int width) => text.PadLeft(width);
+
+    /// <summary>Fixed-point, invariant, and without the "-0.000" of a tiny negative number.</summary>
+    private static string Fixed(double value, int decimals)
+    {
+        if (!double.IsFinite(value))
+        {
+            return value.ToString(CultureInfo.InvariantCulture);
+        }
+
+        double rounded = Math.Round(value, decimals);
+        if (rounded == 0)
+        {
+            rounded = 0; // turns −0 into +0
+        }
+
+        return rounded.ToString("F" + decimals.ToString(CultureInfo.InvariantCulture), CultureInfo.InvariantCulture);
+    }
+
+    private static string Format(FormattableString text) => text.ToString(CultureInfo.InvariantCulture);
+}
+
+/// <summary>
+/// Comma-separated values with one header row for the whole run; each row is one body at one printed step,
+/// with full 3-D vectors and the world's diagnostics repeated on every body's row. A summary-only scene writes
+/// one row per step for its centre of mass, body "com" (its mean angular velocity in the w columns).
+/// Numbers are invariant and round-trip (shortest form that parses back to the same float).
+/// </summary>
+public sealed class CsvTrajectoryWriter : TrajectoryWriter
+{
+    /// <summary>The column names, in order.</summary>
+    public static readonly IReadOnlyList<string> Columns = new[]
+    {
+        "scene", "step", "time", "body", "x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz",
+        "kinetic", "potential", "mechanical", "px", "py", "pz", "contacts", "max_penetration",
+    };
+
+    private readonly System.IO.TextWriter _out;
+    private bool _headerWritten;
+
+    /// <summary>Writes to <paramref name="output"/>.</summary>
+    public CsvTrajectoryWriter(System.IO.TextWriter output) => _out = output;
+
+    /// <inheritdoc />
+    public override void BeginScene(Scene scene)
+    {
+        if (!_headerWritten)
+        {
+            _out.WriteLine(string.Join(",", Columns));
+            _headerWritten = true;
+        }
+    }
+
+    /// <inheritdoc />
+    public override void WriteStep(Scene scene, int step)
+    {
+        World world = scene.World;
+        WorldDiagnostics d = world.Diagnostics;
+        string prefix = string.Join(",", scene.Name, step.ToString(CultureInfo.InvariantCulture),
+            Math.Round(world.Time, TimeDigits(scene.Dt)).ToString(CultureInfo.InvariantCulture));
+        string diagnostics = string.Join(",", Number(d.KineticEnergy), Number(d.PotentialEnergy), Number(d.MechanicalEnergy),
+            Vector(d.LinearMomentum), d.ContactCount.ToString(CultureInfo.InvariantCulture), Number(d.MaxPenetration));
+        if (scene.SummaryOnly)
+        {
+            var (position, velocity, spin, _, _) = CentreOfMass(world);
+            _out.WriteLine(string.Join(",", prefix, "com", Vector(position), Vector(velocity), Vector(spin), diagnostics));
+            return;
+        }
+
+        for (int i = 0; i < world.Bodies.Count; i++)
+        {
+            RigidBody body = world.Bodies[i];
+            string label = i < scene.Labels.Count ? scene.Labels[i] : (i + 1).ToString(CultureInfo.InvariantCulture);
+            _out.WriteLine(string.Join(",", prefix, label, Vector(body.Position), Vector(body.LinearVelocity), Vector(body.AngularVelocity), diagnostics));
+        }
+    }
+
+    /// <inheritdoc />
+    public override void EndScene(Scene scene, RunSummary summary)
+    {
+        // CSV holds data rows only; the summary is for the table.
+    }
+
+    /// <summary>
+    /// World.Time sums float time steps, so 3 × 0.01f reads 0.029999999; rounding to a few digits below the
+    /// step's own shows the time the user asked for.
+    /// </summary>
+    private static int TimeDigits(float dt) => Math.Clamp((int)Math.Ceiling(-Math.Log10(dt)) + 3, 6, 15);
+
+    private static string Vector(Vector3 v) => string.Join(",", Number(v.X), Number(v.Y), Number(v.Z));
+
+    private static string Number(float value) => value.ToString(CultureInfo.InvariantCulture);
+
+    private static string Number(double value) => value.ToString(CultureInfo.InvariantCulture);
+}
