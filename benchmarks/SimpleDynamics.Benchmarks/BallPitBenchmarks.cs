@@ -1,0 +1,84 @@
+using System.Collections.Generic;
+using BenchmarkDotNet.Attributes;
+
+namespace SimpleDynamics.Benchmarks;
+
+/// <summary>
+/// Ball pit, 2-D (discs at z = 0): one <see cref="World.Step"/> of dt = 1/60 s on a pit of N balls that has been
+/// poured and has settled (<see cref="Warm.Pour"/>). Single thread, the library's defaults (spatial hash,
+/// sequential impulses). The world goes on stepping between invocations, as in a game.
+/// </summary>
+[MemoryDiagnoser]
+public class BallPit2D
+{
+    private readonly BallPit _pit = new(planar: true);
+
+    [ParamsSource(nameof(Counts))]
+    public int N { get; set; }
+
+    public static IEnumerable<int> Counts => Sizes.Scenes;
+
+    [GlobalSetup]
+    public void Setup() => _pit.Setup(N, nameof(BallPit2D));
+
+    [Benchmark]
+    public void Step() => _pit.World.Step(Warm.Dt);
+
+    [GlobalCleanup]
+    public void Cleanup() => _pit.Cleanup();
+}
+
+/// <summary>The ball pit in 3-D with spheres, otherwise as <see cref="BallPit2D"/>.</summary>
+[MemoryDiagnoser]
+public class BallPit3D
+{
+    private readonly BallPit _pit = new(planar: false);
+
+    [ParamsSource(nameof(Counts))]
+    public int N { get; set; }
+
+    public static IEnumerable<int> Counts => Sizes.Scenes;
+
+    [GlobalSetup]
+    public void Setup() => _pit.Setup(N, nameof(BallPit3D));
+
+    [Benchmark]
+    public void Step() => _pit.World.Step(Warm.Dt);
+
+    [GlobalCleanup]
+    public void Cleanup() => _pit.Cleanup();
+}
+
+/// <summary>What the 2-D and 3-D pit benchmarks share: the scene, its warm-up and its record.</summary>
+internal sealed class BallPit
+{
+    private readonly bool _planar;
+    private string _key = "";
+    private string _startContacts = "", _startPenetration = "";
+
+    public BallPit(bool planar) => _planar = planar;
+
+    public World World { get; private set; } = new();
+
+    public void Setup(int n, string type)
+    {
+        World = Scenes.BallPit(n, _planar);
+        int steps = Warm.Pour(World);
+        WorldDiagnostics d = World.Diagnostics;
+        _key = SceneRecord.Key(type, new[] { new KeyValuePair<string, object>("N", n) });
+        _startContacts = SceneRecord.Count(d.ContactCount);
+        _startPenetration = SceneRecord.Metres(d.MaxPenetration);
+        System.Console.WriteLine($"// scene {_key}: warmed for {steps} steps");
+        SceneRecord.Write(_key, _startContacts, _startPenetration);
+    }
+
+    /// <summary>Records the state after warm-up and after the timed steps, so that drift shows in the table.</summary>
+    public void Cleanup()
+    {
+        WorldDiagnostics d = World.Diagnostics;
+        SceneRecord.Write(
+            _key,
+            _startContacts + " → " + SceneRecord.Count(d.ContactCount),
+            _startPenetration + " → " + SceneRecord.Metres(d.MaxPenetration));
+    }
+}
