@@ -22,7 +22,7 @@ public sealed class SortAndSweepDetector : ICollisionDetector
     private Interval[] _intervals = new Interval[16];
 
     /// <inheritdoc />
-    public void FindContacts(ReadOnlySpan<RigidBody> bodies, CollisionData collisions)
+    public void FindContacts(ReadOnlySpan<RigidBody> bodies, CollisionData collisions, float margin = 0f, float lookahead = 0f)
     {
         ArgumentNullException.ThrowIfNull(collisions);
         int n = bodies.Length;
@@ -35,7 +35,8 @@ public sealed class SortAndSweepDetector : ICollisionDetector
         for (int i = 0; i < n; i++)
         {
             RigidBody body = bodies[i];
-            float r = body.Radius;
+            // The same reach the exact test allows: radius, half the margin, and the distance travelled in the lookahead.
+            float r = body.Radius + 0.5f * margin + lookahead * body.LinearVelocity.Length();
             System.Numerics.Vector3 c = body.Position;
             _keys[i] = c.X - r;
             _intervals[i] = new Interval
@@ -59,7 +60,7 @@ public sealed class SortAndSweepDetector : ICollisionDetector
 
                 // The interface's order: A is the body earlier in the given list.
                 int i = Math.Min(first.Body, second.Body), j = Math.Max(first.Body, second.Body);
-                if (ContactGeometry.TryCollide(bodies[i], bodies[j], out Contact contact))
+                if (ContactGeometry.TryCollide(bodies[i], bodies[j], margin, lookahead, out Contact contact))
                 {
                     collisions.Add(contact);
                 }

@@ -36,9 +36,9 @@ public class FreeBodyTests
 
     /// <summary>
     /// Spin at constant ω about z: the orientation angle after time t is ωt. The integrator
-    /// q ← normalise(q + ½ dt (ω, 0) q) turns by 2 atan(ω dt / 2) per step, not ω dt; that first-order truncation
-    /// is ≈ (ω dt)³/12 per step, so the closed form ωt holds to N (ω dt)³/12 (7e-5 rad here), and the discrete
-    /// value N·2 atan(ω dt/2) to float rounding. Both are checked.
+    /// q ← normalise(q + ½ h (ω, 0) q) turns by 2 atan(ω h / 2) per substep h = dt / substeps, not ω h; that truncation
+    /// is ≈ (ω h)³/12 per substep, so the closed form ωt holds to N (ω h)³/12 over N substeps, and the discrete
+    /// value N·2 atan(ω h/2) to float rounding. Both are checked.
     /// </summary>
     [Theory]
     [InlineData(2f)]
@@ -63,9 +63,10 @@ public class FreeBodyTests
             previous = current;
         }
 
-        double x = omega * (double)dt;
-        double truncation = steps * Math.Abs(x * x * x) / 12;
-        Assert.Equal(steps * 2 * Math.Atan(x / 2), angle, 1e-5);
+        int substeps = steps * world.Substeps;
+        double x = omega * (double)dt / world.Substeps;
+        double truncation = substeps * Math.Abs(x * x * x) / 12;
+        Assert.Equal(substeps * 2 * Math.Atan(x / 2), angle, 1e-5);
         Assert.InRange(angle, omega * steps * dt - 1.5 * truncation - 1e-5, omega * steps * dt + 1.5 * truncation + 1e-5);
         Assert.Equal(new Vector3(0, 0, omega), body.AngularVelocity);
         Assert.Equal(Vector3.Zero, body.Position);
