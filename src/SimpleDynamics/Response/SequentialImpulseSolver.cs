@@ -34,7 +34,10 @@ namespace SimpleDynamics.Response;
 public sealed class SequentialImpulseSolver : ICollisionResponder
 {
     /// <summary>At most this many rounds of collisions set off by bounces are resolved per substep.</summary>
-    private const int MaxCollisionRounds = 8;
+    private const int MaxCollisionRounds = 4;
+
+    /// <summary>At most this many sweeps are spent converging the stop of colliding contacts.</summary>
+    private const int MaxConvergenceSweeps = 16;
 
     private readonly ContactCache _cache = new();
     private VelocityState[] _bodies = new VelocityState[16];
@@ -319,10 +322,42 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     {
         for (int iteration = 0; iteration < _velocityIterations; iteration++)
         {
+            Sweep(count);
+        }
+    }
+
+    /// <summary>
+    /// Sweeps until no normal impulse changes by more than 1e-5 of the largest one (at most
+    /// <see cref="MaxConvergenceSweeps"/>). Used to stop colliding contacts before they bounce: Poisson's
+    /// restitution conserves energy only if the stop is complete.
+    /// </summary>
+    private void SweepUntilConverged(int count)
+    {
+        for (int sweep = 0; sweep < MaxConvergenceSweeps; sweep++)
+        {
+            float largestChange = 0, largestImpulse = 0;
             for (int k = 0; k < count; k++)
             {
-                SolveContact(ref _constraints[_order[k]]);
+                ref Constraint c = ref _constraints[_order[k]];
+                float before = c.NormalImpulse;
+                SolveContact(ref c);
+                largestChange = MathF.Max(largestChange, MathF.Abs(c.NormalImpulse - before));
+                largestImpulse = MathF.Max(largestImpulse, c.NormalImpulse);
             }
+
+            if (largestChange <= 1e-5f * largestImpulse)
+            {
+                return;
+            }
+        }
+    }
+
+    /// <summary>One Gauss–Seidel sweep over every contact, bottom-up.</summary>
+    private void Sweep(int count)
+    {
+        for (int k = 0; k < count; k++)
+        {
+            SolveContact(ref _constraints[_order[k]]);
         }
     }
 
@@ -373,7 +408,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         // Stop every colliding contact completely; stopping some can make others collide, hence the passes.
         for (int pass = 0; pass < MaxCollisionRounds && StopCollidingContacts(count); pass++)
         {
-            Sweeps(count);
+            SweepUntilConverged(count);
         }
 
         bool any = false;
