@@ -40,11 +40,7 @@ public sealed class CollisionData
     /// <summary>Appends a contact, growing the storage when full.</summary>
     public void Add(in Contact contact)
     {
-        if (Count == _contacts.Length)
-        {
-            Array.Resize(ref _contacts, _contacts.Length * 2);
-        }
-
+        Buffers.EnsureCapacity(ref _contacts, Count + 1);
         _contacts[Count++] = contact;
     }
 

@@ -60,7 +60,7 @@ public sealed class SpatialHashDetector : ICollisionDetector
     /// </summary>
     private float GatherBounds(ReadOnlySpan<RigidBody> bodies, float halfMargin, float lookahead)
     {
-        EnsureCapacity(ref _bounds, bodies.Length);
+        Buffers.EnsureCapacity(ref _bounds, bodies.Length);
         double radiusSum = 0;
         for (int i = 0; i < bodies.Length; i++)
         {
@@ -89,7 +89,7 @@ public sealed class SpatialHashDetector : ICollisionDetector
             if (cells > MaxCellsPerBody)
             {
                 b.Oversized = true;
-                EnsureCapacity(ref _oversized, _oversizedCount + 1);
+                Buffers.EnsureCapacity(ref _oversized, _oversizedCount + 1);
                 _oversized[_oversizedCount++] = i;
             }
             else
@@ -110,8 +110,8 @@ public sealed class SpatialHashDetector : ICollisionDetector
             buckets <<= 1;
         }
 
-        EnsureCapacity(ref _entries, entryCount);
-        EnsureCapacity(ref _bucketStart, buckets + 1);
+        Buffers.EnsureCapacity(ref _entries, entryCount);
+        Buffers.EnsureCapacity(ref _bucketStart, buckets + 1);
         Array.Clear(_bucketStart, 0, buckets + 1);
         return buckets - 1;
     }
@@ -234,14 +234,6 @@ public sealed class SpatialHashDetector : ICollisionDetector
         (int)Math.Clamp(MathF.Floor(coordinate * inverseCellSize), -CellLimit, CellLimit);
 
     private static int Hash(int x, int y, int z) => unchecked((x * 73856093) ^ (y * 19349663) ^ (z * 83492791));
-
-    private static void EnsureCapacity<T>(ref T[] array, int needed)
-    {
-        if (array.Length < needed)
-        {
-            Array.Resize(ref array, Math.Max(needed, array.Length * 2));
-        }
-    }
 
     private struct Bounds
     {

@@ -35,6 +35,8 @@ public sealed class ImpulseCollisionResponder : PairwiseResponder
     /// <exception cref="ArgumentOutOfRangeException">ε outside [0, 1] or μ negative or not finite.</exception>
     public ImpulseCollisionResponder(float restitution = 0.5f, float friction = 0f)
     {
+        Guard.UnitInterval(restitution, nameof(restitution));
+        Guard.NonNegative(friction, nameof(friction));
         Restitution = restitution;
         Friction = friction;
     }

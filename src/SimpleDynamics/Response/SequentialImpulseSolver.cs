@@ -59,6 +59,8 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     /// <summary>Creates a solver with default restitution ε and friction μ for surfaces that set none.</summary>
     public SequentialImpulseSolver(float restitution = 0.5f, float friction = 0.3f)
     {
+        Guard.UnitInterval(restitution, nameof(restitution));
+        Guard.NonNegative(friction, nameof(friction));
         Restitution = restitution;
         Friction = friction;
     }
@@ -233,8 +235,8 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     /// <summary>Copies the world's bodies into a contiguous array; slot 0 is the ground (all zero).</summary>
     private void GatherBodies(ReadOnlySpan<RigidBody> bodies)
     {
-        EnsureCapacity(ref _bodies, bodies.Length + 1);
-        EnsureCapacity(ref _positions, bodies.Length + 1);
+        Buffers.EnsureCapacity(ref _bodies, bodies.Length + 1);
+        Buffers.EnsureCapacity(ref _positions, bodies.Length + 1);
         _bodies[0] = default;
         _positions[0] = Vector3.Zero;
         for (int i = 0; i < bodies.Length; i++)
@@ -246,7 +248,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
 
     private void PrepareConstraints(Span<Contact> contacts, float dt)
     {
-        EnsureCapacity(ref _constraints, contacts.Length);
+        Buffers.EnsureCapacity(ref _constraints, contacts.Length);
         for (int i = 0; i < contacts.Length; i++)
         {
             ref Contact contact = ref contacts[i];
@@ -293,8 +295,8 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     /// </summary>
     private void OrderAlongGravity(Span<Contact> contacts, Vector3 gravity)
     {
-        EnsureCapacity(ref _order, contacts.Length);
-        EnsureCapacity(ref _heights, contacts.Length);
+        Buffers.EnsureCapacity(ref _order, contacts.Length);
+        Buffers.EnsureCapacity(ref _heights, contacts.Length);
         for (int i = 0; i < contacts.Length; i++)
         {
             _order[i] = i;
@@ -527,14 +529,6 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     private static int SlotOf(RigidBody body) => body.index + 1; // the ground (index −1) maps to slot 0
 
     private static float InverseOrZero(float denominator) => denominator > 0 ? 1f / denominator : 0f;
-
-    private static void EnsureCapacity<T>(ref T[] array, int needed)
-    {
-        if (array.Length < needed)
-        {
-            Array.Resize(ref array, Math.Max(needed, array.Length * 2));
-        }
-    }
 
     private struct Constraint
     {

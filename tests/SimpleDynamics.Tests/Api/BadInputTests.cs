@@ -238,6 +238,15 @@ public class BadInputTests
         Throws(() => world.Detector = null!, nameof(World.Detector));
         Throws(() => world.Gravity = Nan3, nameof(World.Gravity));
         Assert.Equal(Vector3.Zero, world.Gravity);
+        Throws(() => world.Substeps = 0, nameof(World.Substeps));
+        Assert.Equal(4, world.Substeps);
+        Throws(() => world.ContactMargin = -0.01f, nameof(World.ContactMargin));
+        Throws(() => world.ContactMargin = float.NaN, nameof(World.ContactMargin));
+        Assert.Equal(0.01f, world.ContactMargin);
+        Throws(() => new SpatialHashDetector().FindContacts(ReadOnlySpan<RigidBody>.Empty, new CollisionData(), margin: -1f), "margin");
+        Throws(() => new BruteForceDetector().FindContacts(ReadOnlySpan<RigidBody>.Empty, new CollisionData(), lookahead: float.NaN), "lookahead");
+        Throws(() => _ = new ImpulseCollisionResponder(restitution: 2f), "restitution");
+        Throws(() => _ = new SequentialImpulseSolver(friction: -1f), "friction");
         Throws(() => world.MeasureDiagnostics(Inf3), "point");
     }
 
