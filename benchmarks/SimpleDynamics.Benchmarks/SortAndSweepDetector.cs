@@ -38,6 +38,8 @@ public sealed class SortAndSweepDetector : ICollisionDetector
             // The same reach the exact test allows: radius, half the margin, and the distance travelled in the lookahead.
             float r = body.Radius + 0.5f * margin + lookahead * body.LinearVelocity.Length();
             System.Numerics.Vector3 c = body.Position;
+            // Grown by a rounding allowance: pairs that touch to within float rounding must still reach the exact test.
+            r += 1e-6f * (MathF.Abs(c.X) + MathF.Abs(c.Y) + MathF.Abs(c.Z) + r);
             _keys[i] = c.X - r;
             _intervals[i] = new Interval
             {
