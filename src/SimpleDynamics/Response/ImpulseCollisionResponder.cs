@@ -97,25 +97,10 @@ public sealed class ImpulseCollisionResponder : PairwiseResponder
         float restitution = Mixing.Restitution(contact, Restitution);
         float approach = MathF.Max(normalVelocity, MathF.Min(contact.ApproachVelocity, 0f));
         float bounce = contact.Answered ? 0f : -restitution * approach;
-        float normalImpulse = -(normalVelocity - bounce) / denominator;
-        ImpulseMath.Apply(ref a, ref b, rA, rB, normalImpulse * n); // eq. 6 and 15
 
-        // 2. Tangential impulse (the tutorial's exercise): Coulomb friction along the sliding direction.
-        float tangentImpulse = 0;
+        // 2. Then the tangential impulse (the tutorial's exercise): Coulomb friction along the sliding direction.
         float friction = Mixing.Friction(contact, Friction);
-        if (friction > 0)
-        {
-            relative = ImpulseMath.RelativeVelocity(a, b, rA, rB);
-            Vector3 sliding = relative - Vector3.Dot(relative, n) * n;
-            float slidingSpeed = sliding.Length();
-            if (slidingSpeed > 1e-9f)
-            {
-                Vector3 t = sliding / slidingSpeed;
-                float tangentDenominator = ImpulseMath.EffectiveMassDenominator(a, b, rA, rB, t);
-                tangentImpulse = MathF.Min(slidingSpeed / tangentDenominator, friction * normalImpulse);
-                ImpulseMath.Apply(ref a, ref b, rA, rB, -tangentImpulse * t);
-            }
-        }
+        float normalImpulse = ImpulseMath.Collide(ref a, ref b, rA, rB, n, normalVelocity, bounce, 1f / denominator, friction, out float tangentImpulse);
 
         a.StoreTo(contact.BodyA);
         b.StoreTo(contact.BodyB);

@@ -38,4 +38,38 @@ internal static class ImpulseMath
         b.Linear -= impulse * b.InverseMass;
         b.Angular -= b.InverseInertia.Transform(Vector3.Cross(rB, impulse));
     }
+
+    /// <summary>
+    /// One collision of the tutorial's impulse method on its own: the normal impulse of eq. 16 that turns the
+    /// relative normal velocity <paramref name="normalVelocity"/> (&lt; 0, approaching) into
+    /// <paramref name="bounceVelocity"/> (eq. 9: −ε times the approach), then the tangential impulse the
+    /// tutorial leaves as an exercise: Coulomb friction along the sliding direction t left after the normal
+    /// impulse, J_t = |v_t| / k_t (k_t the denominator of eq. 16 along t) clamped to μ J. It opposes the sliding
+    /// and at most stops it, so friction never adds kinetic energy.
+    /// </summary>
+    /// <returns>The normal impulse J; <paramref name="tangentImpulse"/> is the friction impulse's magnitude.</returns>
+    public static float Collide(
+        ref VelocityState a, ref VelocityState b, Vector3 rA, Vector3 rB, Vector3 n,
+        float normalVelocity, float bounceVelocity, float normalMass, float friction, out float tangentImpulse)
+    {
+        float normalImpulse = (bounceVelocity - normalVelocity) * normalMass; // eq. 16, with m_eff = 1 / denominator
+        Apply(ref a, ref b, rA, rB, normalImpulse * n); // eq. 6 and 15
+
+        tangentImpulse = 0;
+        if (friction > 0)
+        {
+            Vector3 relative = RelativeVelocity(a, b, rA, rB);
+            Vector3 sliding = relative - Vector3.Dot(relative, n) * n;
+            float slidingSpeed = sliding.Length();
+            if (slidingSpeed > 1e-9f)
+            {
+                Vector3 t = sliding / slidingSpeed;
+                float tangentDenominator = EffectiveMassDenominator(a, b, rA, rB, t);
+                tangentImpulse = System.MathF.Min(slidingSpeed / tangentDenominator, friction * normalImpulse);
+                Apply(ref a, ref b, rA, rB, -tangentImpulse * t);
+            }
+        }
+
+        return normalImpulse;
+    }
 }

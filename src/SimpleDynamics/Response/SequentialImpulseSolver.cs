@@ -20,11 +20,17 @@ namespace SimpleDynamics.Response;
 /// <para><b>Speculative contacts.</b> A contact whose bodies have not met yet (negative penetration, see
 /// <see cref="World.ContactMargin"/>) may close its gap within the substep but no more, so the bodies meet
 /// exactly instead of overlapping.</para>
-/// <para><b>Restitution</b> (eq. 9) follows Poisson's hypothesis: after the sweeps that stop every approach
-/// (compression), each contact gets ε times its compression impulse back, all at once. For a lone pair that is
-/// exactly eq. 9; for simultaneous contacts it never adds energy when ε ≤ 1. Collisions set off by a bounce are
-/// resolved in further rounds. Below <see cref="RestitutionThreshold"/> ε acts as 0, so slow contacts come to
-/// rest instead of jittering.</para>
+/// <para><b>Collisions first, then contacts</b> (Guendelman, Bridson and Fedkiw, "Nonconvex Rigid Bodies with
+/// Stacking", SIGGRAPH 2003). Restitution (eq. 9) is given in a collision pass before the contact sweeps: every
+/// contact that approaches faster than <see cref="RestitutionThreshold"/> (and, if speculative, would close its
+/// gap within the substep) is answered like the tutorial's impulse responder, with the approach speed it has
+/// before the solve: the impulse of eq. 16 that turns its relative normal velocity into −ε times itself, with
+/// Coulomb friction. Contacts are visited in sweeps until none is left approaching, so a collision that throws a
+/// body against a third one is answered too (a row of touching balls passes a blow along). Each such impulse is
+/// a whole two-body collision: for ε = 1 it keeps the kinetic energy exactly, for ε &lt; 1 it loses some, so no
+/// amount of simultaneous collisions adds energy, converged or not. The contact sweeps after it have ε = 0: they
+/// only keep slow and resting contacts from approaching. A resting ball, which gravity pulls into the ground by
+/// g·h each substep, is under the threshold and is stopped instead of hopping.</para>
 /// <para><b>Position pass.</b> After positions are integrated, penetration deeper than <see cref="Slop"/> is
 /// removed by the projection of listing 2, split by inverse mass, over <see cref="PositionIterations"/>
 /// Gauss–Seidel sweeps (Box2D's non-linear Gauss–Seidel), each moving a contact by at most
@@ -33,11 +39,11 @@ namespace SimpleDynamics.Response;
 /// </remarks>
 public sealed class SequentialImpulseSolver : ICollisionResponder
 {
-    /// <summary>At most this many rounds of collisions set off by bounces are resolved per substep.</summary>
-    private const int MaxCollisionRounds = 4;
-
-    /// <summary>At most this many sweeps are spent converging the stop of colliding contacts.</summary>
-    private const int MaxConvergenceSweeps = 16;
+    /// <summary>
+    /// At most this many collision sweeps per substep; what still approaches after them is stopped by the contact
+    /// sweeps (ε = 0).
+    /// </summary>
+    private const int MaxCollisionSweeps = 32;
 
     private readonly ContactCache _cache = new();
     private VelocityState[] _bodies = new VelocityState[16];
@@ -45,6 +51,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     private Constraint[] _constraints = new Constraint[16];
     private int[] _order = new int[16];
     private float[] _heights = new float[16];
+    private int[] _collidedInSweep = new int[16];
 
     private int _velocityIterations = 4;
     private int _positionIterations = 2;
@@ -181,18 +188,14 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         GatherBodies(bodies);
         PrepareConstraints(collisions.Contacts, dt);
         OrderAlongGravity(collisions.Contacts, world.Gravity);
+        int count = collisions.Count;
+        ResolveCollisions(count);
         if (WarmStarting)
         {
-            WarmStart(collisions.Count);
+            WarmStart(count);
         }
 
-        int count = collisions.Count;
         Sweeps(count);
-        for (int round = 0; round < MaxCollisionRounds && Restitute(count); round++)
-        {
-            Sweeps(count);
-        }
-
         StoreImpulses(collisions.Contacts);
         ScatterVelocities(bodies);
     }
@@ -268,11 +271,11 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
             c.Friction = _mixing.Friction(contact, _friction);
 
             // A contact still open (penetration < 0, speculative) may close its gap within this substep but no
-            // more; a touching one may not approach. Bounces are added by Restitute.
+            // more; a touching one may not approach. Bounces are given by ResolveCollisions.
             c.SpeculativeVelocity = contact.Penetration < 0 ? contact.Penetration / dt : 0f;
-            c.TargetVelocity = c.SpeculativeVelocity;
             c.Restitution = _mixing.Restitution(contact, _restitution);
-            c.CommittedImpulse = 0;
+            c.CollisionImpulse = 0;
+            c.CollisionFriction = 0;
 
             c.NormalImpulse = 0;
             c.FrictionImpulse1 = 0;
@@ -284,8 +287,6 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
                 c.FrictionImpulse2 = Vector3.Dot(frictionImpulse, c.Tangent2);
                 ClampFriction(ref c);
             }
-
-            c.StartImpulse = c.NormalImpulse;
         }
     }
 
@@ -328,32 +329,6 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         }
     }
 
-    /// <summary>
-    /// Sweeps until no normal impulse changes by more than 1e-5 of the largest one (at most
-    /// <see cref="MaxConvergenceSweeps"/>). Used to stop colliding contacts before they bounce: Poisson's
-    /// restitution conserves energy only if the stop is complete.
-    /// </summary>
-    private void SweepUntilConverged(int count)
-    {
-        for (int sweep = 0; sweep < MaxConvergenceSweeps; sweep++)
-        {
-            float largestChange = 0, largestImpulse = 0;
-            for (int k = 0; k < count; k++)
-            {
-                ref Constraint c = ref _constraints[_order[k]];
-                float before = c.NormalImpulse;
-                SolveContact(ref c);
-                largestChange = MathF.Max(largestChange, MathF.Abs(c.NormalImpulse - before));
-                largestImpulse = MathF.Max(largestImpulse, c.NormalImpulse);
-            }
-
-            if (largestChange <= 1e-5f * largestImpulse)
-            {
-                return;
-            }
-        }
-    }
-
     /// <summary>One Gauss–Seidel sweep over every contact, bottom-up.</summary>
     private void Sweep(int count)
     {
@@ -367,7 +342,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     /// One contact's impulses given what all others did so far: friction (Coulomb, accumulated and clamped to
     /// the disc |P_t| ≤ μ P_n), then the normal impulse of eq. 16 that brings the relative normal velocity to the
     /// target (0, or for a speculative contact the speed that just closes its gap), accumulated and clamped to
-    /// ≥ the committed impulse (≥ 0: a contact pushes, never pulls).
+    /// ≥ 0 (a contact pushes, never pulls).
     /// </summary>
     private void SolveContact(ref Constraint c)
     {
@@ -385,73 +360,66 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         relative = ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB);
         float normalVelocity = Vector3.Dot(relative, c.Normal);
         float oldNormal = c.NormalImpulse;
-        c.NormalImpulse = MathF.Max(oldNormal - c.NormalMass * (normalVelocity - c.TargetVelocity), c.CommittedImpulse);
+        c.NormalImpulse = MathF.Max(oldNormal - c.NormalMass * (normalVelocity - c.SpeculativeVelocity), 0f);
         ImpulseMath.Apply(ref a, ref b, c.RA, c.RB, (c.NormalImpulse - oldNormal) * c.Normal);
     }
 
     /// <summary>
-    /// Restitution (eq. 9) by Poisson's hypothesis, applied to all contacts at once. The sweeps before only kept
-    /// contacts from approaching; a contact that pushed in them has collided. A speculative one was only slowed
-    /// to close its gap within the substep, so first all colliding contacts are stopped completely, solved
-    /// together (the bodies meet at most a substep's travel early); the energy balance below needs every
-    /// colliding contact at rest before the bounce (a contact restituted while still closing its gap loses
-    /// 2 P gap/h of energy). The normal impulse each contact added since
-    /// the last round is then its compression impulse P_c, and restitution adds ε P_c to every contact
-    /// simultaneously. For a lone pair this is exactly eq. 9 (the relative normal velocity becomes −ε times the
-    /// approach); for several contacts at once, compression removes ½ Pᵀ A P of kinetic energy
-    /// (A = J M⁻¹ Jᵀ) and restitution gives back ε² of it, so no round adds energy when ε ≤ 1. A contact whose
-    /// impact speed P_c/m_eff is below <see cref="RestitutionThreshold"/> gets no bounce: a resting contact only
-    /// absorbs what gravity adds in a substep. Impulses are committed: later sweeps may add, never take back.
-    /// A bounce can throw a body against a third one; the caller's next sweeps find that compression and the
-    /// next round bounces it. Returns whether any restitution impulse was applied.
+    /// The collision pass (Guendelman et al. 2003): sweeps over the contacts, bottom-up, answering each one that
+    /// collides like the tutorial's impulse responder (eq. 16 with the bounce of eq. 9, then Coulomb friction),
+    /// until a sweep finds none (at most <see cref="MaxCollisionSweeps"/>). A contact collides if it approaches
+    /// faster than <see cref="RestitutionThreshold"/> and faster than its speculative speed (an open contact
+    /// that would not close its gap within the substep has not met yet). After the first sweep only contacts
+    /// with a body that a collision moved in the sweep before are looked at again: the others cannot have
+    /// changed. These impulses are not warm-started next step: a bounce is a one-off, not a resting load.
     /// </summary>
-    private bool Restitute(int count)
+    private void ResolveCollisions(int count)
     {
-        // Stop every colliding contact completely; stopping some can make others collide, hence the passes.
-        for (int pass = 0; pass < MaxCollisionRounds && StopCollidingContacts(count); pass++)
+        Buffers.EnsureCapacity(ref _collidedInSweep, _bodies.Length);
+        Array.Clear(_collidedInSweep, 0, _bodies.Length);
+        for (int sweep = 1; sweep <= MaxCollisionSweeps; sweep++)
         {
-            SweepUntilConverged(count);
-        }
-
-        bool any = false;
-        for (int k = 0; k < count; k++)
-        {
-            ref Constraint c = ref _constraints[_order[k]];
-            float compression = c.NormalImpulse - c.StartImpulse;
-            if (compression > 0 && c.NormalMass > 0 && c.Restitution > 0 && compression / c.NormalMass > _restitutionThreshold)
+            bool any = false;
+            for (int k = 0; k < count; k++)
             {
-                float bounce = c.Restitution * compression;
-                ImpulseMath.Apply(ref _bodies[c.A], ref _bodies[c.B], c.RA, c.RB, bounce * c.Normal);
-                c.NormalImpulse += bounce;
+                ref Constraint c = ref _constraints[_order[k]];
+                if (c.Restitution == 0 || c.NormalMass == 0 ||
+                    (sweep > 1 && _collidedInSweep[c.A] < sweep - 1 && _collidedInSweep[c.B] < sweep - 1))
+                {
+                    continue;
+                }
+
+                ref VelocityState a = ref _bodies[c.A];
+                ref VelocityState b = ref _bodies[c.B];
+                float normalVelocity = Vector3.Dot(ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB), c.Normal); // eq. 13–14
+                if (normalVelocity >= c.SpeculativeVelocity || -normalVelocity <= _restitutionThreshold)
+                {
+                    continue;
+                }
+
+                float bounce = -c.Restitution * normalVelocity; // eq. 9
+                c.CollisionImpulse += ImpulseMath.Collide(
+                    ref a, ref b, c.RA, c.RB, c.Normal, normalVelocity, bounce, c.NormalMass, c.Friction, out float friction);
+                c.CollisionFriction += friction;
+                MarkCollided(c.A, sweep);
+                MarkCollided(c.B, sweep);
                 any = true;
             }
 
-            c.StartImpulse = c.NormalImpulse;
-            c.CommittedImpulse = c.NormalImpulse;
-            c.TargetVelocity = c.SpeculativeVelocity;
+            if (!any)
+            {
+                return;
+            }
         }
-
-        return any;
     }
 
-    /// <summary>
-    /// Sets the target of every speculative contact that pushed since the last round to 0 (a full stop);
-    /// returns whether there was any.
-    /// </summary>
-    private bool StopCollidingContacts(int count)
+    /// <summary>Remembers that a body was moved by a collision in this sweep; the ground and other infinite masses never move.</summary>
+    private void MarkCollided(int slot, int sweep)
     {
-        bool any = false;
-        for (int i = 0; i < count; i++)
+        if (_bodies[slot].InverseMass > 0)
         {
-            ref Constraint c = ref _constraints[i];
-            if (c.NormalImpulse > c.StartImpulse && c.TargetVelocity < 0)
-            {
-                c.TargetVelocity = 0;
-                any = true;
-            }
+            _collidedInSweep[slot] = sweep;
         }
-
-        return any;
     }
 
     private void StoreImpulses(Span<Contact> contacts)
@@ -462,8 +430,8 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
             ref Constraint c = ref _constraints[i];
             Vector3 friction = c.FrictionImpulse1 * c.Tangent1 + c.FrictionImpulse2 * c.Tangent2;
             _cache.Store(contacts[i].Key, c.NormalImpulse, friction);
-            contacts[i].NormalImpulse = c.NormalImpulse;
-            contacts[i].TangentImpulse = friction.Length();
+            contacts[i].NormalImpulse = c.NormalImpulse + c.CollisionImpulse;
+            contacts[i].TangentImpulse = friction.Length() + c.CollisionFriction;
         }
 
         _cache.EndStep();
@@ -537,11 +505,9 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         public Vector3 Normal, Tangent1, Tangent2;
         public float NormalMass, TangentMass1, TangentMass2;
         public float SpeculativeVelocity;
-        public float TargetVelocity;
         public float Restitution;
-        public float CommittedImpulse;
-        public float StartImpulse;
         public float Friction;
+        public float CollisionImpulse, CollisionFriction;
         public float NormalImpulse, FrictionImpulse1, FrictionImpulse2;
     }
 }
