@@ -36,15 +36,15 @@ public struct Contact
 
     /// <summary>
     /// Relative normal velocity <c>(v_pA − v_pB)·n</c> when the contact was detected, before this step's forces.
-    /// The iterative solver takes the bounce (eq. 9) from it, so that gravity acting during the contact step
-    /// adds no energy.
+    /// The tutorial's impulse responder takes the bounce (eq. 9) from it, so that gravity acting during the
+    /// contact step adds no energy.
     /// </summary>
     public float ApproachVelocity;
 
-    /// <summary>Normal impulse (N·s) the responder applied in the last step; 0 if none.</summary>
+    /// <summary>Normal impulse (N·s) the responder applied in the last step, all substeps together; 0 if none.</summary>
     public float NormalImpulse;
 
-    /// <summary>Size of the tangential (friction) impulse (N·s) applied in the last step.</summary>
+    /// <summary>Size of the tangential (friction) impulses (N·s) applied in the last step, all substeps together.</summary>
     public float TangentImpulse;
 
     /// <summary>

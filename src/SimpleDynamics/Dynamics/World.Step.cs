@@ -36,6 +36,7 @@ public sealed partial class World
         Guard.Positive(dt, nameof(dt));
         DetectCollisions(dt);
         float h = dt / _substeps;
+        _stepping = true;
         for (Substep = 0; Substep < _substeps; Substep++)
         {
             IntegrateVelocities(h);
@@ -47,12 +48,22 @@ public sealed partial class World
         }
 
         Substep = 0;
+        _stepping = false;
         ClearForces();
         Time += dt;
     }
 
     /// <summary>The substep being run (0 to <see cref="Substeps"/> − 1), for responders; 0 between steps.</summary>
     public int Substep { get; private set; }
+
+    /// <summary>
+    /// Whether a responder is called on the first substep of a step, when contacts are new; outside
+    /// <see cref="Step"/> (a responder called on its own) every call counts as a whole step.
+    /// </summary>
+    internal bool IsFirstSubstep => !_stepping || Substep == 0;
+
+    /// <summary>Whether a responder is called on the last substep of a step (or outside <see cref="Step"/>).</summary>
+    internal bool IsLastSubstep => !_stepping || Substep == _substeps - 1;
 
     private void DetectCollisions(float dt)
     {

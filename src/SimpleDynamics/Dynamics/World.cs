@@ -21,6 +21,7 @@ public sealed partial class World
     private int _planeCount;
     private Vector3 _gravity;
     private int _substeps = 4;
+    private bool _stepping;
     private float _contactMargin = 0.01f;
     private ICollisionResponder _responder;
     private ICollisionDetector _detector;

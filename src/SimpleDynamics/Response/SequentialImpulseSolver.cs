@@ -179,24 +179,38 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     public void ResetWarmStart() => _cache.Clear();
 
     /// <inheritdoc />
-    /// <remarks>Called once per substep; <paramref name="dt"/> is the substep.</remarks>
+    /// <remarks>
+    /// Called once per substep; <paramref name="dt"/> is the substep. The contacts' geometry (normals, lever arms,
+    /// effective masses, order) is prepared on the first substep of a step and kept for the step, as Box2D v3
+    /// does; each substep measures only the gaps again. Outside <see cref="World.Step"/> every call is a step.
+    /// </remarks>
     public void ResolveVelocities(World world, CollisionData collisions, float dt)
     {
         Guard.NotNull(world, nameof(world));
         Guard.NotNull(collisions, nameof(collisions));
         ReadOnlySpan<RigidBody> bodies = world.BodySpan;
-        GatherBodies(bodies);
-        PrepareConstraints(collisions.Contacts, dt);
-        OrderAlongGravity(collisions.Contacts, world.Gravity);
-        int count = collisions.Count;
-        ResolveCollisions(count);
-        if (WarmStarting)
+        Span<Contact> contacts = collisions.Contacts;
+        if (world.IsFirstSubstep)
         {
-            WarmStart(count);
+            GatherBodies(bodies);
+            PrepareConstraints(contacts);
+            OrderAlongGravity(contacts, world.Gravity);
+        }
+        else
+        {
+            GatherVelocities(bodies);
         }
 
-        Sweeps(count);
-        StoreImpulses(collisions.Contacts);
+        MeasureGaps(contacts, dt);
+        ResolveCollisions(contacts.Length);
+        WarmStart(contacts.Length);
+        Sweeps(contacts.Length);
+        AddToStepTotals(contacts.Length);
+        if (world.IsLastSubstep)
+        {
+            StoreImpulses(contacts);
+        }
+
         ScatterVelocities(bodies);
     }
 
@@ -249,7 +263,17 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         }
     }
 
-    private void PrepareConstraints(Span<Contact> contacts, float dt)
+    /// <summary>Copies the velocities again on later substeps (gravity and forces changed them); masses stay.</summary>
+    private void GatherVelocities(ReadOnlySpan<RigidBody> bodies)
+    {
+        for (int i = 0; i < bodies.Length; i++)
+        {
+            _bodies[i + 1].Linear = bodies[i].linearVelocity;
+            _bodies[i + 1].Angular = bodies[i].angularVelocity;
+        }
+    }
+
+    private void PrepareConstraints(Span<Contact> contacts)
     {
         Buffers.EnsureCapacity(ref _constraints, contacts.Length);
         for (int i = 0; i < contacts.Length; i++)
@@ -270,12 +294,9 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
             c.TangentMass2 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(a, b, c.RA, c.RB, c.Tangent2));
             c.Friction = _mixing.Friction(contact, _friction);
 
-            // A contact still open (penetration < 0, speculative) may close its gap within this substep but no
-            // more; a touching one may not approach. Bounces are given by ResolveCollisions.
-            c.SpeculativeVelocity = contact.Penetration < 0 ? contact.Penetration / dt : 0f;
             c.Restitution = _mixing.Restitution(contact, _restitution);
-            c.CollisionImpulse = 0;
-            c.CollisionFriction = 0;
+            c.StepNormalImpulse = 0;
+            c.StepFrictionImpulse = 0;
 
             c.NormalImpulse = 0;
             c.FrictionImpulse1 = 0;
@@ -310,8 +331,38 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         }
     }
 
+    /// <summary>
+    /// A contact still open (penetration &lt; 0, speculative) may close its gap within this substep but no more;
+    /// a touching one may not approach. Measured again every substep, as the gaps close.
+    /// </summary>
+    private void MeasureGaps(Span<Contact> contacts, float dt)
+    {
+        for (int i = 0; i < contacts.Length; i++)
+        {
+            float penetration = contacts[i].Penetration;
+            _constraints[i].SpeculativeVelocity = penetration < 0 ? penetration / dt : 0f;
+        }
+    }
+
+    /// <summary>
+    /// Applies the impulses accumulated so far (last step's from the cache on the first substep, the previous
+    /// substep's after that), so that a resting pile starts each substep almost solved. Without warm starting they
+    /// start from zero.
+    /// </summary>
     private void WarmStart(int count)
     {
+        if (!WarmStarting)
+        {
+            for (int i = 0; i < count; i++)
+            {
+                _constraints[i].NormalImpulse = 0;
+                _constraints[i].FrictionImpulse1 = 0;
+                _constraints[i].FrictionImpulse2 = 0;
+            }
+
+            return;
+        }
+
         for (int i = 0; i < count; i++)
         {
             ref Constraint c = ref _constraints[i];
@@ -398,9 +449,9 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
                 }
 
                 float bounce = -c.Restitution * normalVelocity; // eq. 9
-                c.CollisionImpulse += ImpulseMath.Collide(
+                c.StepNormalImpulse += ImpulseMath.Collide(
                     ref a, ref b, c.RA, c.RB, c.Normal, normalVelocity, bounce, c.NormalMass, c.Friction, out float friction);
-                c.CollisionFriction += friction;
+                c.StepFrictionImpulse += friction;
                 MarkCollided(c.A, sweep);
                 MarkCollided(c.B, sweep);
                 any = true;
@@ -422,6 +473,18 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         }
     }
 
+    /// <summary>Adds this substep's contact impulses to the step's totals, which the contacts report.</summary>
+    private void AddToStepTotals(int count)
+    {
+        for (int i = 0; i < count; i++)
+        {
+            ref Constraint c = ref _constraints[i];
+            c.StepNormalImpulse += c.NormalImpulse;
+            c.StepFrictionImpulse += MathF.Sqrt(c.FrictionImpulse1 * c.FrictionImpulse1 + c.FrictionImpulse2 * c.FrictionImpulse2);
+        }
+    }
+
+    /// <summary>Keeps the last substep's accumulated impulses for the next step's warm start (contact persistence).</summary>
     private void StoreImpulses(Span<Contact> contacts)
     {
         _cache.BeginStep(contacts.Length);
@@ -430,8 +493,8 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
             ref Constraint c = ref _constraints[i];
             Vector3 friction = c.FrictionImpulse1 * c.Tangent1 + c.FrictionImpulse2 * c.Tangent2;
             _cache.Store(contacts[i].Key, c.NormalImpulse, friction);
-            contacts[i].NormalImpulse = c.NormalImpulse + c.CollisionImpulse;
-            contacts[i].TangentImpulse = friction.Length() + c.CollisionFriction;
+            contacts[i].NormalImpulse = c.StepNormalImpulse;
+            contacts[i].TangentImpulse = c.StepFrictionImpulse;
         }
 
         _cache.EndStep();
@@ -507,7 +570,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         public float SpeculativeVelocity;
         public float Restitution;
         public float Friction;
-        public float CollisionImpulse, CollisionFriction;
+        public float StepNormalImpulse, StepFrictionImpulse;
         public float NormalImpulse, FrictionImpulse1, FrictionImpulse2;
     }
 }
