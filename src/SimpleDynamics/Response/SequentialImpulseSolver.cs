@@ -193,8 +193,8 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         if (world.IsFirstSubstep)
         {
             GatherBodies(bodies);
-            PrepareConstraints(contacts);
             OrderAlongGravity(contacts, world.Gravity);
+            PrepareConstraints(contacts);
         }
         else
         {
@@ -230,13 +230,12 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
             _positions[i + 1] = bodies[i].position;
         }
 
-        Span<Contact> contacts = collisions.Contacts;
+        int count = collisions.Count;
         for (int iteration = 0; iteration < _positionIterations; iteration++)
         {
-            for (int k = 0; k < contacts.Length; k++)
+            for (int k = 0; k < count; k++)
             {
-                int i = _order[k];
-                CorrectPosition(ref _constraints[i], contacts[i]);
+                CorrectPosition(ref _constraints[k]);
             }
         }
 
@@ -273,13 +272,18 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         }
     }
 
+    /// <summary>
+    /// Builds the constraints in the order they are solved (<see cref="OrderAlongGravity"/>), so that every sweep
+    /// walks one array front to back; each remembers its contact.
+    /// </summary>
     private void PrepareConstraints(Span<Contact> contacts)
     {
         Buffers.EnsureCapacity(ref _constraints, contacts.Length);
-        for (int i = 0; i < contacts.Length; i++)
+        for (int k = 0; k < contacts.Length; k++)
         {
-            ref Contact contact = ref contacts[i];
-            ref Constraint c = ref _constraints[i];
+            ref Contact contact = ref contacts[_order[k]];
+            ref Constraint c = ref _constraints[k];
+            c.ContactIndex = _order[k];
             c.A = SlotOf(contact.BodyA);
             c.B = SlotOf(contact.BodyB);
             ref VelocityState a = ref _bodies[c.A];
@@ -294,6 +298,9 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
             c.TangentMass2 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(a, b, c.RA, c.RB, c.Tangent2));
             c.Friction = _mixing.Friction(contact, _friction);
 
+            c.RadiusA = contact.BodyA.radius;
+            c.RadiusB = contact.BodyB.radius;
+            c.PlaneOffset = contact.IsPlaneContact ? contact.PlaneOffset : float.NaN;
             c.Restitution = _mixing.Restitution(contact, _restitution);
             c.StepNormalImpulse = 0;
             c.StepFrictionImpulse = 0;
@@ -339,8 +346,9 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     {
         for (int i = 0; i < contacts.Length; i++)
         {
-            float penetration = contacts[i].Penetration;
-            _constraints[i].SpeculativeVelocity = penetration < 0 ? penetration / dt : 0f;
+            ref Constraint c = ref _constraints[i];
+            float penetration = contacts[c.ContactIndex].Penetration;
+            c.SpeculativeVelocity = penetration < 0 ? penetration / dt : 0f;
         }
     }
 
@@ -385,7 +393,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     {
         for (int k = 0; k < count; k++)
         {
-            SolveContact(ref _constraints[_order[k]]);
+            SolveContact(ref _constraints[k]);
         }
     }
 
@@ -400,19 +408,26 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         ref VelocityState a = ref _bodies[c.A];
         ref VelocityState b = ref _bodies[c.B];
 
-        Vector3 relative = ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB); // eq. 13–14
-        float old1 = c.FrictionImpulse1, old2 = c.FrictionImpulse2;
-        c.FrictionImpulse1 -= c.TangentMass1 * Vector3.Dot(relative, c.Tangent1);
-        c.FrictionImpulse2 -= c.TangentMass2 * Vector3.Dot(relative, c.Tangent2);
-        ClampFriction(ref c);
-        Vector3 frictionDelta = (c.FrictionImpulse1 - old1) * c.Tangent1 + (c.FrictionImpulse2 - old2) * c.Tangent2;
-        ImpulseMath.Apply(ref a, ref b, c.RA, c.RB, frictionDelta);
+        // A contact that pushes nothing has no friction either (|P_t| ≤ μ P_n = 0): skip the work, which is
+        // most of it for the many speculative contacts that never close.
+        if (c.NormalImpulse > 0 || c.FrictionImpulse1 != 0 || c.FrictionImpulse2 != 0)
+        {
+            Vector3 relative = ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB); // eq. 13–14
+            float old1 = c.FrictionImpulse1, old2 = c.FrictionImpulse2;
+            c.FrictionImpulse1 -= c.TangentMass1 * Vector3.Dot(relative, c.Tangent1);
+            c.FrictionImpulse2 -= c.TangentMass2 * Vector3.Dot(relative, c.Tangent2);
+            ClampFriction(ref c);
+            Vector3 frictionDelta = (c.FrictionImpulse1 - old1) * c.Tangent1 + (c.FrictionImpulse2 - old2) * c.Tangent2;
+            ImpulseMath.Apply(ref a, ref b, c.RA, c.RB, frictionDelta);
+        }
 
-        relative = ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB);
-        float normalVelocity = Vector3.Dot(relative, c.Normal);
+        float normalVelocity = Vector3.Dot(ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB), c.Normal);
         float oldNormal = c.NormalImpulse;
         c.NormalImpulse = MathF.Max(oldNormal - c.NormalMass * (normalVelocity - c.SpeculativeVelocity), 0f);
-        ImpulseMath.Apply(ref a, ref b, c.RA, c.RB, (c.NormalImpulse - oldNormal) * c.Normal);
+        if (c.NormalImpulse != oldNormal)
+        {
+            ImpulseMath.Apply(ref a, ref b, c.RA, c.RB, (c.NormalImpulse - oldNormal) * c.Normal);
+        }
     }
 
     /// <summary>
@@ -433,7 +448,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
             bool any = false;
             for (int k = 0; k < count; k++)
             {
-                ref Constraint c = ref _constraints[_order[k]];
+                ref Constraint c = ref _constraints[k];
                 if (c.Restitution == 0 || c.NormalMass == 0 ||
                     (sweep > 1 && _collidedInSweep[c.A] < sweep - 1 && _collidedInSweep[c.B] < sweep - 1))
                 {
@@ -492,9 +507,10 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         {
             ref Constraint c = ref _constraints[i];
             Vector3 friction = c.FrictionImpulse1 * c.Tangent1 + c.FrictionImpulse2 * c.Tangent2;
-            _cache.Store(contacts[i].Key, c.NormalImpulse, friction);
-            contacts[i].NormalImpulse = c.StepNormalImpulse;
-            contacts[i].TangentImpulse = c.StepFrictionImpulse;
+            ref Contact contact = ref contacts[c.ContactIndex];
+            _cache.Store(contact.Key, c.NormalImpulse, friction);
+            contact.NormalImpulse = c.StepNormalImpulse;
+            contact.TangentImpulse = c.StepFrictionImpulse;
         }
 
         _cache.EndStep();
@@ -512,7 +528,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     /// Listing 2 as a Gauss–Seidel position sweep: measure the contact at the current positions and push the
     /// bodies apart along the normal, split by inverse mass, by a bounded share of the depth beyond the slop.
     /// </summary>
-    private void CorrectPosition(ref Constraint c, in Contact contact)
+    private void CorrectPosition(ref Constraint c)
     {
         float inverseMassSum = _bodies[c.A].InverseMass + _bodies[c.B].InverseMass;
         if (inverseMassSum == 0)
@@ -524,14 +540,14 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         ref Vector3 positionB = ref _positions[c.B];
         float penetration;
         Vector3 normal;
-        if (contact.IsPlaneContact)
+        if (c.IsPlaneContact)
         {
-            normal = contact.Normal;
-            penetration = ContactGeometry.PlanePenetration(positionA, contact.BodyA.radius, normal, contact.PlaneOffset);
+            normal = c.Normal;
+            penetration = ContactGeometry.PlanePenetration(positionA, c.RadiusA, normal, c.PlaneOffset);
         }
         else
         {
-            penetration = ContactGeometry.CirclePenetration(positionA, contact.BodyA.radius, positionB, contact.BodyB.radius, out normal);
+            penetration = ContactGeometry.CirclePenetration(positionA, c.RadiusA, positionB, c.RadiusB, out normal);
         }
 
         float correction = MathF.Min(_correctionFactor * (penetration - _slop), _maxCorrection);
@@ -563,6 +579,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
 
     private struct Constraint
     {
+        public int ContactIndex;
         public int A, B;
         public Vector3 RA, RB;
         public Vector3 Normal, Tangent1, Tangent2;
@@ -571,6 +588,10 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         public float Restitution;
         public float Friction;
         public float StepNormalImpulse, StepFrictionImpulse;
+        public float RadiusA, RadiusB;
+        public float PlaneOffset; // NaN unless B is the ground plane
+
+        public readonly bool IsPlaneContact => !float.IsNaN(PlaneOffset);
         public float NormalImpulse, FrictionImpulse1, FrictionImpulse2;
     }
 }
