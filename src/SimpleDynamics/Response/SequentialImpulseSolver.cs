@@ -54,6 +54,8 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     private int[] _collidedInSweep = new int[16];
 
     private int _velocityIterations = 4;
+    private int _extraIterations = 8;
+    private float _convergenceTolerance = 1e-3f;
     private int _positionIterations = 2;
     private float _restitution;
     private float _friction;
@@ -72,7 +74,10 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         Friction = friction;
     }
 
-    /// <summary>Velocity iterations per substep (≥ 1, default 4). More iterations: stiffer piles, more time.</summary>
+    /// <summary>
+    /// Velocity iterations (Gauss–Seidel sweeps) per substep, always done (≥ 1, default 4). More iterations:
+    /// stiffer piles, more time.
+    /// </summary>
     public int VelocityIterations
     {
         get => _velocityIterations;
@@ -83,7 +88,36 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         }
     }
 
-    /// <summary>Position-correction sweeps per step (≥ 0, default 2; 0 turns the correction off).</summary>
+    /// <summary>
+    /// Further sweeps per substep (≥ 0, default 8), done only while the last sweep has not converged (see
+    /// <see cref="ConvergenceTolerance"/>). A pile at rest converges in one or two of them and then lies still;
+    /// a pile being hit spends them where it needs them.
+    /// </summary>
+    public int ExtraIterations
+    {
+        get => _extraIterations;
+        set
+        {
+            Guard.AtLeast(value, 0, nameof(ExtraIterations));
+            _extraIterations = value;
+        }
+    }
+
+    /// <summary>
+    /// A sweep has converged when no normal impulse changed by more than this fraction of the largest normal
+    /// impulse (≥ 0, default 1e-3; 0 spends every extra iteration).
+    /// </summary>
+    public float ConvergenceTolerance
+    {
+        get => _convergenceTolerance;
+        set
+        {
+            Guard.NonNegative(value, nameof(ConvergenceTolerance));
+            _convergenceTolerance = value;
+        }
+    }
+
+    /// <summary>Position-correction sweeps per substep (≥ 0, default 2; 0 turns the correction off).</summary>
     public int PositionIterations
     {
         get => _positionIterations;
@@ -386,15 +420,29 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         {
             Sweep(count);
         }
+
+        for (int extra = 0; extra < _extraIterations && !Sweep(count); extra++)
+        {
+        }
     }
 
-    /// <summary>One Gauss–Seidel sweep over every contact, bottom-up.</summary>
-    private void Sweep(int count)
+    /// <summary>
+    /// One Gauss–Seidel sweep over every contact, bottom-up. Returns whether it converged: no normal impulse
+    /// changed by more than <see cref="ConvergenceTolerance"/> times the largest one.
+    /// </summary>
+    private bool Sweep(int count)
     {
+        float largestChange = 0, largestImpulse = 0;
         for (int k = 0; k < count; k++)
         {
-            SolveContact(ref _constraints[k]);
+            ref Constraint c = ref _constraints[k];
+            float before = c.NormalImpulse;
+            SolveContact(ref c);
+            largestChange = MathF.Max(largestChange, MathF.Abs(c.NormalImpulse - before));
+            largestImpulse = MathF.Max(largestImpulse, c.NormalImpulse);
         }
+
+        return largestChange <= _convergenceTolerance * largestImpulse;
     }
 
     /// <summary>

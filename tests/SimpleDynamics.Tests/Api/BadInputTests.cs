@@ -186,6 +186,9 @@ public class BadInputTests
         { nameof(SequentialImpulseSolver.VelocityIterations), s => s.VelocityIterations = 0 },
         { nameof(SequentialImpulseSolver.VelocityIterations), s => s.VelocityIterations = -3 },
         { nameof(SequentialImpulseSolver.PositionIterations), s => s.PositionIterations = -1 },
+        { nameof(SequentialImpulseSolver.ExtraIterations), s => s.ExtraIterations = -1 },
+        { nameof(SequentialImpulseSolver.ConvergenceTolerance), s => s.ConvergenceTolerance = -1e-3f },
+        { nameof(SequentialImpulseSolver.ConvergenceTolerance), s => s.ConvergenceTolerance = float.NaN },
         { nameof(SequentialImpulseSolver.RestitutionThreshold), s => s.RestitutionThreshold = -0.1f },
         { nameof(SequentialImpulseSolver.RestitutionThreshold), s => s.RestitutionThreshold = float.NaN },
         { nameof(SequentialImpulseSolver.RestitutionThreshold), s => s.RestitutionThreshold = float.PositiveInfinity },
@@ -212,7 +215,7 @@ public class BadInputTests
     }
 
     private static string Settings(SequentialImpulseSolver s) =>
-        $"{s.VelocityIterations} {s.PositionIterations} {s.RestitutionThreshold} {s.Slop} {s.CorrectionFactor} {s.MaxCorrection} {s.Restitution} {s.Friction} {s.WarmStarting} {s.Mixing.GetHashCode()}";
+        $"{s.VelocityIterations} {s.ExtraIterations} {s.ConvergenceTolerance} {s.PositionIterations} {s.RestitutionThreshold} {s.Slop} {s.CorrectionFactor} {s.MaxCorrection} {s.Restitution} {s.Friction} {s.WarmStarting} {s.Mixing.GetHashCode()}";
 
     [Fact]
     public void Other_null_and_range_arguments_name_their_parameter()
