@@ -327,6 +327,14 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
             Vectors.Tangents(c.Normal, out c.Tangent1, out c.Tangent2);
             c.RA = contact.Point - _positions[c.A]; // r_1 = p − c_1 (eq. 16)
             c.RB = contact.Point - _positions[c.B];
+            // What a unit impulse along n, t1, t2 does to each body's spin, I⁻¹ (r × d) (eq. 15), computed once per
+            // step so that the sweeps need no matrix products.
+            c.SpinA = a.InverseInertia.Transform(Vector3.Cross(c.RA, c.Normal));
+            c.SpinB = b.InverseInertia.Transform(Vector3.Cross(c.RB, c.Normal));
+            c.SpinA1 = a.InverseInertia.Transform(Vector3.Cross(c.RA, c.Tangent1));
+            c.SpinB1 = b.InverseInertia.Transform(Vector3.Cross(c.RB, c.Tangent1));
+            c.SpinA2 = a.InverseInertia.Transform(Vector3.Cross(c.RA, c.Tangent2));
+            c.SpinB2 = b.InverseInertia.Transform(Vector3.Cross(c.RB, c.Tangent2));
             c.NormalMass = InverseOrZero(ImpulseMath.EffectiveMassDenominator(a, b, c.RA, c.RB, c.Normal)); // eq. 16
             c.TangentMass1 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(a, b, c.RA, c.RB, c.Tangent1));
             c.TangentMass2 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(a, b, c.RA, c.RB, c.Tangent2));
@@ -408,8 +416,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         for (int i = 0; i < count; i++)
         {
             ref Constraint c = ref _constraints[i];
-            Vector3 impulse = c.NormalImpulse * c.Normal + c.FrictionImpulse1 * c.Tangent1 + c.FrictionImpulse2 * c.Tangent2;
-            ImpulseMath.Apply(ref _bodies[c.A], ref _bodies[c.B], c.RA, c.RB, impulse);
+            Apply(ref c, c.NormalImpulse, c.FrictionImpulse1, c.FrictionImpulse2);
         }
     }
 
@@ -465,8 +472,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
             c.FrictionImpulse1 -= c.TangentMass1 * Vector3.Dot(relative, c.Tangent1);
             c.FrictionImpulse2 -= c.TangentMass2 * Vector3.Dot(relative, c.Tangent2);
             ClampFriction(ref c);
-            Vector3 frictionDelta = (c.FrictionImpulse1 - old1) * c.Tangent1 + (c.FrictionImpulse2 - old2) * c.Tangent2;
-            ImpulseMath.Apply(ref a, ref b, c.RA, c.RB, frictionDelta);
+            Apply(ref c, 0f, c.FrictionImpulse1 - old1, c.FrictionImpulse2 - old2);
         }
 
         float normalVelocity = Vector3.Dot(ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB), c.Normal);
@@ -474,8 +480,23 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         c.NormalImpulse = MathF.Max(oldNormal - c.NormalMass * (normalVelocity - c.SpeculativeVelocity), 0f);
         if (c.NormalImpulse != oldNormal)
         {
-            ImpulseMath.Apply(ref a, ref b, c.RA, c.RB, (c.NormalImpulse - oldNormal) * c.Normal);
+            Apply(ref c, c.NormalImpulse - oldNormal, 0f, 0f);
         }
+    }
+
+    /// <summary>
+    /// Applies the impulse P = p_n n + p_1 t_1 + p_2 t_2 to A and −P to B: eq. 6 for the velocities, eq. 15 for the
+    /// spins through the prepared I⁻¹ (r × d) of each direction (the same as <see cref="ImpulseMath.Apply"/>).
+    /// </summary>
+    private void Apply(ref Constraint c, float normal, float tangent1, float tangent2)
+    {
+        ref VelocityState a = ref _bodies[c.A];
+        ref VelocityState b = ref _bodies[c.B];
+        Vector3 impulse = normal * c.Normal + tangent1 * c.Tangent1 + tangent2 * c.Tangent2;
+        a.Linear += impulse * a.InverseMass;
+        a.Angular += normal * c.SpinA + tangent1 * c.SpinA1 + tangent2 * c.SpinA2;
+        b.Linear -= impulse * b.InverseMass;
+        b.Angular -= normal * c.SpinB + tangent1 * c.SpinB1 + tangent2 * c.SpinB2;
     }
 
     /// <summary>
@@ -631,6 +652,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         public int A, B;
         public Vector3 RA, RB;
         public Vector3 Normal, Tangent1, Tangent2;
+        public Vector3 SpinA, SpinB, SpinA1, SpinB1, SpinA2, SpinB2;
         public float NormalMass, TangentMass1, TangentMass2;
         public float SpeculativeVelocity;
         public float Restitution;
