@@ -50,6 +50,9 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     private Vector3[] _positions = new Vector3[16];
     private Constraint[] _constraints = new Constraint[16];
     private int[] _order = new int[16];
+    private int[] _bodyAt = new int[16];
+    private int[] _slotOf = new int[16];
+    private float[] _bodyHeights = new float[16];
     private float[] _heights = new float[16];
     private int[] _collidedInSweep = new int[16];
 
@@ -226,7 +229,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         Span<Contact> contacts = collisions.Contacts;
         if (world.IsFirstSubstep)
         {
-            GatherBodies(bodies);
+            GatherBodies(bodies, world.Gravity);
             OrderAlongGravity(contacts, world.Gravity);
             PrepareConstraints(contacts);
         }
@@ -259,9 +262,9 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         }
 
         ReadOnlySpan<RigidBody> bodies = world.BodySpan;
-        for (int i = 0; i < bodies.Length; i++)
+        for (int slot = 1; slot <= bodies.Length; slot++)
         {
-            _positions[i + 1] = bodies[i].position;
+            _positions[slot] = bodies[_bodyAt[slot]].position;
         }
 
         int count = collisions.Count;
@@ -273,26 +276,48 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
             }
         }
 
-        for (int i = 0; i < bodies.Length; i++)
+        for (int slot = 1; slot <= bodies.Length; slot++)
         {
-            if (bodies[i].IsDynamic)
+            RigidBody body = bodies[_bodyAt[slot]];
+            if (body.IsDynamic)
             {
-                bodies[i].position = _positions[i + 1];
+                body.position = _positions[slot];
             }
         }
     }
 
-    /// <summary>Copies the world's bodies into a contiguous array; slot 0 is the ground (all zero).</summary>
-    private void GatherBodies(ReadOnlySpan<RigidBody> bodies)
+    /// <summary>
+    /// Copies the world's bodies into a contiguous array; slot 0 is the ground (all zero). The slots follow the
+    /// bodies' height along gravity, like the contacts (<see cref="OrderAlongGravity"/>), so that a sweep finds the
+    /// bodies of neighbouring contacts close together in memory instead of anywhere in a large world.
+    /// </summary>
+    private void GatherBodies(ReadOnlySpan<RigidBody> bodies, Vector3 gravity)
     {
-        Buffers.EnsureCapacity(ref _bodies, bodies.Length + 1);
-        Buffers.EnsureCapacity(ref _positions, bodies.Length + 1);
+        int n = bodies.Length;
+        Buffers.EnsureCapacity(ref _bodies, n + 1);
+        Buffers.EnsureCapacity(ref _positions, n + 1);
+        Buffers.EnsureCapacity(ref _bodyAt, n + 1);
+        Buffers.EnsureCapacity(ref _slotOf, n);
+        Buffers.EnsureCapacity(ref _bodyHeights, n + 1);
+        for (int i = 0; i < n; i++)
+        {
+            _bodyAt[i + 1] = i;
+            _bodyHeights[i + 1] = -Vector3.Dot(bodies[i].position, gravity);
+        }
+
+        if (gravity != Vector3.Zero)
+        {
+            Array.Sort(_bodyHeights, _bodyAt, 1, n);
+        }
+
         _bodies[0] = default;
         _positions[0] = Vector3.Zero;
-        for (int i = 0; i < bodies.Length; i++)
+        for (int slot = 1; slot <= n; slot++)
         {
-            _bodies[i + 1] = VelocityState.Of(bodies[i]);
-            _positions[i + 1] = bodies[i].position;
+            RigidBody body = bodies[_bodyAt[slot]];
+            _slotOf[_bodyAt[slot]] = slot;
+            _bodies[slot] = VelocityState.Of(body);
+            _positions[slot] = body.position;
         }
     }
 
@@ -301,8 +326,9 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     {
         for (int i = 0; i < bodies.Length; i++)
         {
-            _bodies[i + 1].Linear = bodies[i].linearVelocity;
-            _bodies[i + 1].Angular = bodies[i].angularVelocity;
+            RigidBody body = bodies[_bodyAt[i + 1]];
+            _bodies[i + 1].Linear = body.linearVelocity;
+            _bodies[i + 1].Angular = body.angularVelocity;
         }
     }
 
@@ -589,7 +615,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     {
         for (int i = 0; i < bodies.Length; i++)
         {
-            _bodies[i + 1].StoreTo(bodies[i]);
+            _bodies[i + 1].StoreTo(bodies[_bodyAt[i + 1]]);
         }
     }
 
@@ -642,7 +668,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         }
     }
 
-    private static int SlotOf(RigidBody body) => body.index + 1; // the ground (index −1) maps to slot 0
+    private int SlotOf(RigidBody body) => body.index < 0 ? 0 : _slotOf[body.index]; // the ground (index −1) is slot 0
 
     private static float InverseOrZero(float denominator) => denominator > 0 ? 1f / denominator : 0f;
 
