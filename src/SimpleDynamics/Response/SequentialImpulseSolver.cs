@@ -46,13 +46,16 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     private const int MaxCollisionSweeps = 32;
 
     private readonly ContactCache _cache = new();
+    private readonly HeightOrder _heightOrder = new();
     private VelocityState[] _bodies = new VelocityState[16];
     private Vector3[] _positions = new Vector3[16];
     private Constraint[] _constraints = new Constraint[16];
     private int[] _order = new int[16];
-    private int[] _bodyAt = new int[16];
+    private int[] _bodyOrder = new int[16];
     private int[] _slotOf = new int[16];
     private float[] _bodyHeights = new float[16];
+    private float[] _radii = new float[16];
+    private Contact[] _arranged = new Contact[16];
     private float[] _heights = new float[16];
     private int[] _collidedInSweep = new int[16];
 
@@ -231,6 +234,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         {
             GatherBodies(bodies, world.Gravity);
             OrderAlongGravity(contacts, world.Gravity);
+            ArrangeContacts(contacts);
             PrepareConstraints(contacts);
         }
         else
@@ -262,9 +266,9 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         }
 
         ReadOnlySpan<RigidBody> bodies = world.BodySpan;
-        for (int slot = 1; slot <= bodies.Length; slot++)
+        for (int i = 0; i < bodies.Length; i++)
         {
-            _positions[slot] = bodies[_bodyAt[slot]].position;
+            _positions[_slotOf[i]] = bodies[i].position;
         }
 
         int count = collisions.Count;
@@ -276,12 +280,11 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
             }
         }
 
-        for (int slot = 1; slot <= bodies.Length; slot++)
+        for (int i = 0; i < bodies.Length; i++)
         {
-            RigidBody body = bodies[_bodyAt[slot]];
-            if (body.IsDynamic)
+            if (bodies[i].IsDynamic)
             {
-                body.position = _positions[slot];
+                bodies[i].position = _positions[_slotOf[i]];
             }
         }
     }
@@ -296,28 +299,30 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         int n = bodies.Length;
         Buffers.EnsureCapacity(ref _bodies, n + 1);
         Buffers.EnsureCapacity(ref _positions, n + 1);
-        Buffers.EnsureCapacity(ref _bodyAt, n + 1);
+        Buffers.EnsureCapacity(ref _bodyOrder, n);
         Buffers.EnsureCapacity(ref _slotOf, n);
-        Buffers.EnsureCapacity(ref _bodyHeights, n + 1);
+        Buffers.EnsureCapacity(ref _bodyHeights, n);
+        Buffers.EnsureCapacity(ref _radii, n + 1);
         for (int i = 0; i < n; i++)
         {
-            _bodyAt[i + 1] = i;
-            _bodyHeights[i + 1] = -Vector3.Dot(bodies[i].position, gravity);
+            _bodyHeights[i] = -Vector3.Dot(bodies[i].position, gravity);
         }
 
-        if (gravity != Vector3.Zero)
+        _heightOrder.Sort(_bodyHeights.AsSpan(0, n), _bodyOrder.AsSpan(0, n));
+        for (int k = 0; k < n; k++)
         {
-            Array.Sort(_bodyHeights, _bodyAt, 1, n);
+            _slotOf[_bodyOrder[k]] = k + 1;
         }
 
         _bodies[0] = default;
         _positions[0] = Vector3.Zero;
-        for (int slot = 1; slot <= n; slot++)
+        _radii[0] = 0;
+        for (int i = 0; i < n; i++)
         {
-            RigidBody body = bodies[_bodyAt[slot]];
-            _slotOf[_bodyAt[slot]] = slot;
-            _bodies[slot] = VelocityState.Of(body);
-            _positions[slot] = body.position;
+            int slot = _slotOf[i];
+            _bodies[slot] = VelocityState.Of(bodies[i]);
+            _positions[slot] = bodies[i].position;
+            _radii[slot] = bodies[i].radius;
         }
     }
 
@@ -326,24 +331,34 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     {
         for (int i = 0; i < bodies.Length; i++)
         {
-            RigidBody body = bodies[_bodyAt[i + 1]];
-            _bodies[i + 1].Linear = body.linearVelocity;
-            _bodies[i + 1].Angular = body.angularVelocity;
+            ref VelocityState state = ref _bodies[_slotOf[i]];
+            state.Linear = bodies[i].linearVelocity;
+            state.Angular = bodies[i].angularVelocity;
         }
     }
 
     /// <summary>
-    /// Builds the constraints in the order they are solved (<see cref="OrderAlongGravity"/>), so that every sweep
-    /// walks one array front to back; each remembers its contact.
+    /// Puts the contacts in the order they are solved (<see cref="OrderAlongGravity"/>), so that every pass over
+    /// contacts and constraints walks both arrays front to back: constraint k is contact k.
     /// </summary>
+    private void ArrangeContacts(Span<Contact> contacts)
+    {
+        Buffers.EnsureCapacity(ref _arranged, contacts.Length);
+        for (int k = 0; k < contacts.Length; k++)
+        {
+            _arranged[k] = contacts[_order[k]];
+        }
+
+        _arranged.AsSpan(0, contacts.Length).CopyTo(contacts);
+    }
+
     private void PrepareConstraints(Span<Contact> contacts)
     {
         Buffers.EnsureCapacity(ref _constraints, contacts.Length);
         for (int k = 0; k < contacts.Length; k++)
         {
-            ref Contact contact = ref contacts[_order[k]];
+            ref Contact contact = ref contacts[k];
             ref Constraint c = ref _constraints[k];
-            c.ContactIndex = _order[k];
             c.A = SlotOf(contact.BodyA);
             c.B = SlotOf(contact.BodyB);
             ref VelocityState a = ref _bodies[c.A];
@@ -366,8 +381,8 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
             c.TangentMass2 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(a, b, c.RA, c.RB, c.Tangent2));
             c.Friction = _mixing.Friction(contact, _friction);
 
-            c.RadiusA = contact.BodyA.radius;
-            c.RadiusB = contact.BodyB.radius;
+            c.RadiusA = _radii[c.A];
+            c.RadiusB = _radii[c.B];
             c.PlaneOffset = contact.IsPlaneContact ? contact.PlaneOffset : float.NaN;
             c.Restitution = _mixing.Restitution(contact, _restitution);
             c.StepNormalImpulse = 0;
@@ -396,14 +411,10 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         Buffers.EnsureCapacity(ref _heights, contacts.Length);
         for (int i = 0; i < contacts.Length; i++)
         {
-            _order[i] = i;
             _heights[i] = -Vector3.Dot(contacts[i].Point, gravity);
         }
 
-        if (gravity != Vector3.Zero)
-        {
-            Array.Sort(_heights, _order, 0, contacts.Length);
-        }
+        _heightOrder.Sort(_heights.AsSpan(0, contacts.Length), _order.AsSpan(0, contacts.Length));
     }
 
     /// <summary>
@@ -415,7 +426,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         for (int i = 0; i < contacts.Length; i++)
         {
             ref Constraint c = ref _constraints[i];
-            float penetration = contacts[c.ContactIndex].Penetration;
+            float penetration = contacts[i].Penetration;
             c.SpeculativeVelocity = penetration < 0 ? penetration / dt : 0f;
         }
     }
@@ -602,7 +613,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         {
             ref Constraint c = ref _constraints[i];
             Vector3 friction = c.FrictionImpulse1 * c.Tangent1 + c.FrictionImpulse2 * c.Tangent2;
-            ref Contact contact = ref contacts[c.ContactIndex];
+            ref Contact contact = ref contacts[i];
             _cache.Store(contact.Key, c.NormalImpulse, friction);
             contact.NormalImpulse = c.StepNormalImpulse;
             contact.TangentImpulse = c.StepFrictionImpulse;
@@ -615,7 +626,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     {
         for (int i = 0; i < bodies.Length; i++)
         {
-            _bodies[i + 1].StoreTo(bodies[_bodyAt[i + 1]]);
+            _bodies[_slotOf[i]].StoreTo(bodies[i]);
         }
     }
 
@@ -674,7 +685,6 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
 
     private struct Constraint
     {
-        public int ContactIndex;
         public int A, B;
         public Vector3 RA, RB;
         public Vector3 Normal, Tangent1, Tangent2;
