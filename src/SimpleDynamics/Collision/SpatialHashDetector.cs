@@ -10,8 +10,9 @@ namespace SimpleDynamics.Collision;
 /// </summary>
 /// <remarks>
 /// <para><b>Why a grid</b> (measured in <c>benchmarks/</c>, see its README). Timing one detection on a settled
-/// 2-D pit, sort-and-sweep (in the benchmark project) beats this grid by 3–7× at 1,000–4,000 bodies, equal or
-/// ten-fold mixed radii, and both beat brute force by 7–50×. Timing whole steps at 16,000 bodies, sort-and-sweep
+/// 2-D pit, sort-and-sweep (in the benchmark project) beats this grid by 3–3.6× at 1,000 bodies and by 1–1.6× at
+/// 4,000 (equal or ten-fold mixed radii), but grows faster with N (14–19× against 6× from 1,000 to 4,000); both
+/// beat brute force by 12–50×. Timing whole steps at 16,000 bodies (with an earlier solver), sort-and-sweep
 /// was faster on the 2-D pit and the smash but almost three times slower on the 3-D pit (28 → 77 ms), because a
 /// sweep along one axis meets every body in a slab, about n^(2/3) of them in 3-D, while a grid cell holds a few.
 /// The grid is kept as the default for its even behaviour in 2-D and 3-D; its constant factor is the next thing

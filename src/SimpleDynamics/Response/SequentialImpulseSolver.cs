@@ -15,8 +15,13 @@ namespace SimpleDynamics.Response;
 /// <para><b>Velocity pass.</b> Each iteration visits every contact and applies the impulse that would make its
 /// constraint hold, given what the other contacts did so far (Gauss–Seidel). Per contact, the <i>accumulated</i>
 /// normal impulse is clamped to ≥ 0 (a contact pushes, never pulls) and the accumulated friction impulse to the
-/// disc of radius μ × normal impulse (Coulomb). Warm starting applies last step's accumulated impulses first, so
-/// a resting pile starts each step almost solved.</para>
+/// disc of radius μ × normal impulse (Coulomb). Warm starting applies last step's accumulated impulses first (and,
+/// within a step, the previous substep's), so a resting pile starts almost solved. <see cref="VelocityIterations"/>
+/// sweeps are always done, then up to <see cref="ExtraIterations"/> more until the impulses stop changing.</para>
+/// <para><b>Memory order.</b> Contacts are prepared once per step (normals, lever arms, effective masses and the
+/// spin each unit impulse causes) and kept for its substeps. They are put in the order they are solved, bottom-up
+/// along gravity, and the bodies' working copies in the same order, so that a sweep walks memory front to back
+/// instead of jumping around a large world.</para>
 /// <para><b>Speculative contacts.</b> A contact whose bodies have not met yet (negative penetration, see
 /// <see cref="World.ContactMargin"/>) may close its gap within the substep but no more, so the bodies meet
 /// exactly instead of overlapping.</para>
