@@ -20,12 +20,18 @@ internal static class ImpulseMath
     /// 1/m_1 + 1/m_2 + ((I_1⁻¹(r_1 × d)) × r_1 + (I_2⁻¹(r_2 × d)) × r_2) · d.
     /// Its inverse is the effective mass m_eff that the contact sees along d.
     /// </summary>
-    public static float EffectiveMassDenominator(in VelocityState a, in VelocityState b, Vector3 rA, Vector3 rB, Vector3 d)
-    {
-        Vector3 angularA = Vector3.Cross(a.InverseInertia.Transform(Vector3.Cross(rA, d)), rA);
-        Vector3 angularB = Vector3.Cross(b.InverseInertia.Transform(Vector3.Cross(rB, d)), rB);
-        return a.InverseMass + b.InverseMass + Vector3.Dot(angularA + angularB, d);
-    }
+    public static float EffectiveMassDenominator(in VelocityState a, in VelocityState b, Vector3 rA, Vector3 rB, Vector3 d) =>
+        EffectiveMassDenominator(
+            a.InverseMass + b.InverseMass,
+            a.InverseInertia.Transform(Vector3.Cross(rA, d)), rA,
+            b.InverseInertia.Transform(Vector3.Cross(rB, d)), rB,
+            d);
+
+    /// <summary>
+    /// The same denominator of eq. 16 when the spins a unit impulse along d causes, I⁻¹ (r × d), are already known.
+    /// </summary>
+    public static float EffectiveMassDenominator(float inverseMassSum, Vector3 spinA, Vector3 rA, Vector3 spinB, Vector3 rB, Vector3 d) =>
+        inverseMassSum + Vector3.Dot(Vector3.Cross(spinA, rA) + Vector3.Cross(spinB, rB), d);
 
     /// <summary>
     /// Applies impulse P to A and −P to B at the contact: v' = v ± P/m (eq. 6) and

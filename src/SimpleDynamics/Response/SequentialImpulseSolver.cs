@@ -357,6 +357,10 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         _arranged.AsSpan(0, contacts.Length).CopyTo(contacts);
     }
 
+    /// <summary>
+    /// Everything about a contact that stays the same during a step: bodies, normal and tangents, lever arms, the
+    /// spins and effective masses of eq. 15–16, material (ε, μ) and last step's impulses for the warm start.
+    /// </summary>
     private void PrepareConstraints(Span<Contact> contacts)
     {
         Buffers.EnsureCapacity(ref _constraints, contacts.Length);
@@ -381,9 +385,10 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
             c.SpinB1 = b.InverseInertia.Transform(Vector3.Cross(c.RB, c.Tangent1));
             c.SpinA2 = a.InverseInertia.Transform(Vector3.Cross(c.RA, c.Tangent2));
             c.SpinB2 = b.InverseInertia.Transform(Vector3.Cross(c.RB, c.Tangent2));
-            c.NormalMass = InverseOrZero(ImpulseMath.EffectiveMassDenominator(a, b, c.RA, c.RB, c.Normal)); // eq. 16
-            c.TangentMass1 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(a, b, c.RA, c.RB, c.Tangent1));
-            c.TangentMass2 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(a, b, c.RA, c.RB, c.Tangent2));
+            float inverseMassSum = a.InverseMass + b.InverseMass;
+            c.NormalMass = InverseOrZero(ImpulseMath.EffectiveMassDenominator(inverseMassSum, c.SpinA, c.RA, c.SpinB, c.RB, c.Normal)); // eq. 16
+            c.TangentMass1 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(inverseMassSum, c.SpinA1, c.RA, c.SpinB1, c.RB, c.Tangent1));
+            c.TangentMass2 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(inverseMassSum, c.SpinA2, c.RA, c.SpinB2, c.RB, c.Tangent2));
             c.Friction = _mixing.Friction(contact, _friction);
 
             c.RadiusA = _radii[c.A];
@@ -462,7 +467,10 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
         }
     }
 
-    /// <summary><see cref="VelocityIterations"/> Gauss–Seidel sweeps over every contact, bottom-up.</summary>
+    /// <summary>
+    /// <see cref="VelocityIterations"/> Gauss–Seidel sweeps over every contact, bottom-up, then up to
+    /// <see cref="ExtraIterations"/> more until one has converged.
+    /// </summary>
     private void Sweeps(int count)
     {
         for (int iteration = 0; iteration < _velocityIterations; iteration++)
