@@ -228,6 +228,7 @@ public sealed class SequentialImpulseSolver : ICollisionResponder
     /// Called once per substep; <paramref name="dt"/> is the substep. The contacts' geometry (normals, lever arms,
     /// effective masses, order) is prepared on the first substep of a step and kept for the step, as Box2D v3
     /// does; each substep measures only the gaps again. Outside <see cref="World.Step"/> every call is a step.
+    /// The contacts of <paramref name="collisions"/> are put in the order they are solved (bottom-up along gravity).
     /// </remarks>
     public void ResolveVelocities(World world, CollisionData collisions, float dt)
     {
