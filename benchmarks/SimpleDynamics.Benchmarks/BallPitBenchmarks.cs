@@ -84,8 +84,7 @@ internal sealed class BallPit
         _key = SceneRecord.Key(type, new[] { new KeyValuePair<string, object>("N", n), new KeyValuePair<string, object>("Extra", extraIterations) });
         _startContacts = SceneRecord.Count(d.ContactCount);
         _startPenetration = SceneRecord.Metres(d.MaxPenetration);
-        double mass = System.Linq.Enumerable.Sum(World.Bodies, b => (double)b.Mass);
-        System.Console.WriteLine($"// scene {_key}: warmed for {steps} steps, rms speed {Warm.RmsSpeed(World, mass):E2} m/s");
+        System.Console.WriteLine($"// scene {_key}: warmed for {steps} steps, rms speed {Warm.RmsSpeed(World):E2} m/s");
         SceneRecord.Write(_key, _startContacts, _startPenetration);
     }
 

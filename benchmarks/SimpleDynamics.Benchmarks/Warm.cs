@@ -30,9 +30,8 @@ internal static class Warm
         float top = world.Bodies.Max(b => b.Position.Y);
         float g = MathF.Max(world.Gravity.Length(), 1e-3f);
         int steps = (int)MathF.Ceiling((MathF.Sqrt(2 * top / g) + 2f) / Dt);
-        double mass = world.Bodies.Sum(b => (double)b.Mass);
         int step = 0;
-        while (step < MaxSteps && (step < steps || (step % 60 != 0 || RmsSpeed(world, mass) >= SettledSpeed)))
+        while (step < MaxSteps && (step < steps || (step % 60 != 0 || RmsSpeed(world) >= SettledSpeed)))
         {
             world.Step(Dt);
             step++;
@@ -42,5 +41,6 @@ internal static class Warm
     }
 
     /// <summary>√(2 KE / Σm): the root-mean-square speed of the bodies (translation and spin together).</summary>
-    public static double RmsSpeed(World world, double mass) => Math.Sqrt(2 * world.Diagnostics.KineticEnergy / mass);
+    public static double RmsSpeed(World world) =>
+        Math.Sqrt(2 * world.Diagnostics.KineticEnergy / world.Bodies.Sum(b => (double)b.Mass));
 }
