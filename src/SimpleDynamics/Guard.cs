@@ -5,7 +5,7 @@ using SimpleDynamics.Mathematics;
 namespace SimpleDynamics;
 
 /// <summary>Argument checks that name the offending parameter. They throw before anything is changed.</summary>
-internal static class Guard
+internal static partial class Guard
 {
     public static void Positive(float value, string paramName)
     {

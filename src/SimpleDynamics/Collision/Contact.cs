@@ -35,9 +35,8 @@ public struct Contact
     public float Penetration;
 
     /// <summary>
-    /// Relative normal velocity <c>(v_pA − v_pB)·n</c> when the contact was detected, before this step's forces.
-    /// The tutorial's impulse responder takes the bounce (eq. 9) from it, so that gravity acting during the
-    /// contact step adds no energy.
+    /// Relative normal velocity <c>(v_pA − v_pB)·n</c>: when the contact was detected, and at each collision the
+    /// velocity with which the bodies meet at their time of impact (the one eq. 9 bounces). Negative: approaching.
     /// </summary>
     public float ApproachVelocity;
 
@@ -47,17 +46,11 @@ public struct Contact
     /// <summary>Size of the tangential (friction) impulses (N·s) applied in the last step, all substeps together.</summary>
     public float TangentImpulse;
 
-    /// <summary>
-    /// True once a single-pair responder has answered this contact in this step, so that it bounces once per
-    /// step however many substeps hold it.
-    /// </summary>
-    internal bool Answered;
+    /// <summary>Identifies the pair across steps (by the bodies' <see cref="RigidBody.Id"/>, or a body and a plane index), e.g. to keep warm-start impulses.</summary>
+    public ulong Key { readonly get; internal set; }
 
-    /// <summary>Identifies the pair across steps (contact persistence for warm starting).</summary>
-    internal ulong Key;
-
-    /// <summary>Index of the plane when B is the ground, else -1.</summary>
-    internal int PlaneIndex;
+    /// <summary>Index into <see cref="World.Planes"/> when B is the ground of a plane, else −1.</summary>
+    public int PlaneIndex { readonly get; internal set; }
 
     /// <summary>For a plane contact: the plane's offset along the normal.</summary>
     internal float PlaneOffset;
@@ -82,7 +75,6 @@ public struct Contact
         ApproachVelocity = Vector3.Dot(bodyA.VelocityAt(point) - bodyB.VelocityAt(point), normal);
         NormalImpulse = 0;
         TangentImpulse = 0;
-        Answered = false;
         Key = PairKey(bodyA.Id, bodyB.Id);
         PlaneIndex = -1;
         PlaneOffset = 0;
@@ -93,9 +85,11 @@ public struct Contact
     /// <summary>Relative velocity of A with respect to B at the contact point, v_pA − v_pB (eq. 13–14).</summary>
     public readonly Vector3 RelativeVelocity => BodyA.VelocityAt(Point) - BodyB.VelocityAt(Point);
 
-    internal static ulong PairKey(int idA, int idB) =>
+    /// <summary>The <see cref="Key"/> of the pair of bodies with these ids (in either order).</summary>
+    public static ulong PairKey(int idA, int idB) =>
         idA < idB ? ((ulong)(uint)idA << 32) | (uint)idB : ((ulong)(uint)idB << 32) | (uint)idA;
 
-    internal static ulong PlaneKey(int bodyId, int planeIndex) =>
+    /// <summary>The <see cref="Key"/> of a body's contact with plane <paramref name="planeIndex"/>.</summary>
+    public static ulong PlaneKey(int bodyId, int planeIndex) =>
         ((ulong)(uint)bodyId << 32) | 0x8000_0000u | (uint)planeIndex;
 }

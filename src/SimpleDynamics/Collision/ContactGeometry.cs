@@ -41,20 +41,14 @@ public static class ContactGeometry
     public static bool TryCollide(RigidBody a, RigidBody b, out Contact contact) => TryCollide(a, b, 0f, 0f, out contact);
 
     /// <summary>
-    /// True when the pair can collide (at least one body is dynamic) and the gap between their circles is less
-    /// than <paramref name="margin"/> plus the distance the bodies can close in <paramref name="lookahead"/>
-    /// seconds: at their relative speed if both keep their velocities, or at the faster one's speed if the other
-    /// is stopped within the step. With margin and lookahead 0 this is the overlap test d &lt; r_A + r_B.
-    /// A reported pair with a gap is a speculative contact (negative <see cref="Contact.Penetration"/>): the
-    /// solver then lets the bodies close the gap but not overlap.
+    /// True when the pair can collide (at least one body is dynamic) and may touch within
+    /// <paramref name="lookahead"/> seconds: the gap between their circles is less than <paramref name="margin"/>
+    /// plus the distance both can travel at their speeds, (|v_A| + |v_B|) × lookahead. Each body then stays within a
+    /// sphere of radius r + margin / 2 + |v| × lookahead around where it starts, and two bodies whose spheres do not
+    /// overlap cannot meet (the world looks a body up again if a collision sends it further). With margin and
+    /// lookahead 0 this is the overlap test d &lt; r_A + r_B. A reported pair with a gap has a negative
+    /// <see cref="Contact.Penetration"/>.
     /// </summary>
-    /// <remarks>
-    /// The speeds, not only the closing speed, decide: two balls falling one above the other onto the ground close
-    /// nothing until the lower one is stopped, partway through the step; then the upper one runs into it. A body
-    /// thrown back by a bounce within the step can close faster still (up to the sum of the speeds); covering that
-    /// too would more than double the contacts of a fast pour, so the overlap it may leave is the position pass's
-    /// to remove.
-    /// </remarks>
     public static bool TryCollide(RigidBody a, RigidBody b, float margin, float lookahead, out Contact contact)
     {
         contact = default;
@@ -63,10 +57,7 @@ public static class ContactGeometry
             return false; // two infinite masses: nothing to resolve
         }
 
-        float closingSpeed = MathF.Sqrt(MathF.Max(
-            (a.linearVelocity - b.linearVelocity).LengthSquared(),
-            MathF.Max(a.linearVelocity.LengthSquared(), b.linearVelocity.LengthSquared())));
-        float reach = a.radius + b.radius + margin + lookahead * closingSpeed;
+        float reach = a.radius + b.radius + margin + lookahead * (a.linearVelocity.Length() + b.linearVelocity.Length());
         if (Vector3.DistanceSquared(a.position, b.position) >= reach * reach)
         {
             return false;

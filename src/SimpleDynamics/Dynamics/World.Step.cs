@@ -2,125 +2,149 @@ using System;
 using System.Numerics;
 using SimpleDynamics.Bodies;
 using SimpleDynamics.Collision;
+using SimpleDynamics.Response;
 
 namespace SimpleDynamics;
 
 public sealed partial class World
 {
+    private readonly ImpactStepper _impacts = new();
+    private StepContext? _stepContext;
+
     /// <summary>
     /// Advances the world by <paramref name="dt"/> seconds.
     /// </summary>
     /// <remarks>
-    /// The pipeline:
+    /// The pipeline, each stage named below:
     /// <list type="number">
-    /// <item>detect: bounding circles against each other and against the planes (§2.1), including pairs that
-    ///   are about to touch within this step (speculative contacts, see <see cref="ContactMargin"/>);</item>
+    /// <item>detect: bounding circles against each other and against the planes (§2.1), including every pair that
+    ///   may touch within the step at the speeds the bodies have (see <see cref="ContactMargin"/>);</item>
+    /// <item>the responder's <see cref="ICollisionResponder.BeginStep"/>;</item>
     /// <item>then <see cref="Substeps"/> times, with h = dt / substeps:
-    ///   integrate velocities (gravity, forces, torques; semi-implicit Euler),
-    ///   resolve velocities (the responder's impulses, eq. 2 or eq. 5–16),
-    ///   integrate positions and orientations with the new velocities,
-    ///   and measure the contacts again;</item>
-    /// <item>resolve positions: the responder's projection / position correction (listing 2);</item>
-    /// <item>measure the contacts again for <see cref="Collisions"/> and the diagnostics.</item>
+    ///   integrate velocities (gravity, forces, torques),
+    ///   the responder's <see cref="ICollisionResponder.SolveVelocities"/> (resting contacts),
+    ///   move with impacts (every collision answered at its time of impact by
+    ///   <see cref="ICollisionResponder.Collide"/>, see below),
+    ///   measure the contacts, and the responder's <see cref="ICollisionResponder.SolvePositions"/> (listing 2);</item>
+    /// <item>the responder's <see cref="ICollisionResponder.EndStep"/>, then measure the contacts for
+    ///   <see cref="Collisions"/> and clear the forces.</item>
     /// </list>
-    /// Detection comes before the velocity update (positions are the same either way) so that each contact
-    /// records its approach velocity from before this step's gravity: a bounce then returns the speed the
-    /// body arrived with, not that plus g·dt, which would add energy at every bounce.
-    /// Substeps make piles stiff: a body sinks into its support by about g·h² per substep before the solver
-    /// catches it, so four substeps sink sixteen times less than one step ("Small Steps in Physics
-    /// Simulation", Macklin et al., SCA 2019; Box2D v3 steps the same way).
+    /// <para><b>Collisions at their time of impact.</b> Within a substep each body's velocity goes uniformly from
+    /// where it started to where gravity, forces and resting contacts take it, which is exact for free flight. Two
+    /// bodies that meet are moved to the moment they touch, the responder answers the collision there with the
+    /// velocities they have at that moment (eq. 9 bounces the speed they arrive with), and both travel the rest of
+    /// the substep with their new velocities; the next impact is then found given what changed. A lone pair without
+    /// gravity therefore follows its exact piecewise-linear motion, and nothing passes through anything: a pair that
+    /// still approaches after the responder's answer is stopped along its normal, and a body sent further than
+    /// detection looked is looked up again (details in the impact pass's documentation, ImpactStepper.cs).</para>
+    /// <para>Substeps make piles stiff: a body sinks into its support by about g·h² per substep before the solver
+    /// catches it, so four substeps sink sixteen times less than one step ("Small Steps in Physics Simulation",
+    /// Macklin et al., SCA 2019; Box2D v3 steps the same way).</para>
+    /// <para>While a step runs, the world's bodies and planes cannot be changed (see <see cref="Add"/>).</para>
     /// </remarks>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="dt"/> is not a positive, finite number; nothing changes.</exception>
+    /// <exception cref="InvalidOperationException">Called while this world is stepping (from a responder).</exception>
     public void Step(float dt)
     {
         Guard.Positive(dt, nameof(dt));
-        DetectCollisions(dt);
-        float h = dt / _substeps;
-        _stepping = true;
-        for (Substep = 0; Substep < _substeps; Substep++)
+        if (_stepping)
         {
-            IntegrateVelocities(h);
-            Responder.ResolveVelocities(this, Collisions, h);
-            IntegratePositions(h);
-            MeasureContacts();
-            Responder.ResolvePositions(this, Collisions, h);
-            MeasureContacts();
+            throw new InvalidOperationException("World.Step was called while the world is stepping (from a responder or detector).");
         }
 
-        Substep = 0;
-        _stepping = false;
-        ClearForces();
-        Time += dt;
+        StepContext step = _stepContext ??= new StepContext(this);
+        _stepping = true;
+        try
+        {
+            step.Begin(dt, _substeps);
+            DetectCollisions(dt);
+            Run(step, StepStage.BeginStep);
+            float h = dt / _substeps;
+            for (int substep = 0; substep < _substeps; substep++)
+            {
+                step.EnterSubstep(substep);
+                _impacts.BeginSubstep(BodySpan);
+                IntegrateVelocities(h);
+                _impacts.AfterForces(BodySpan);
+                Run(step, StepStage.SolveVelocities);
+                _impacts.Move(step, Responder, h, (_substeps - substep) * h);
+                MeasureContacts();
+                Run(step, StepStage.SolvePositions);
+            }
+
+            Run(step, StepStage.EndStep);
+            MeasureContacts();
+            ClearForces();
+            Time += dt;
+        }
+        finally
+        {
+            step.End();
+            _stepping = false;
+        }
     }
 
-    /// <summary>The substep being run (0 to <see cref="Substeps"/> − 1), for responders; 0 between steps.</summary>
-    public int Substep { get; private set; }
+    /// <summary>Impacts answered in the last step (the impact pass), for tests and diagnostics.</summary>
+    internal int ImpactCount => _impacts.ImpactCount;
+
+    /// <summary>Substeps of the last step whose impacts reached the impact pass's limit.</summary>
+    internal int SaturatedSubsteps => _impacts.SaturatedSubsteps;
+
+    /// <summary>Bodies looked up again in the last step because a collision sent them further than detection looked.</summary>
+    internal int ImpactSearches => _impacts.Searches;
+
+    private void Run(StepContext step, StepStage stage)
+    {
+        step.Enter(stage);
+        switch (stage)
+        {
+            case StepStage.BeginStep: Responder.BeginStep(step); break;
+            case StepStage.SolveVelocities: Responder.SolveVelocities(step); break;
+            case StepStage.SolvePositions: Responder.SolvePositions(step); break;
+            case StepStage.EndStep: Responder.EndStep(step); break;
+        }
+
+        step.Enter(StepStage.None);
+    }
 
     /// <summary>
-    /// Whether a responder is called on the first substep of a step, when contacts are new; outside
-    /// <see cref="Step"/> (a responder called on its own) every call counts as a whole step.
+    /// Finds the contacts of the step: every pair and every body–plane pair that may touch within dt. Each body is
+    /// given a sphere of its radius plus half the margin plus the distance it can travel: |v| dt, and ½ |g| dt² that
+    /// gravity adds (so a ball at rest with a long step is still caught by the ground).
     /// </summary>
-    internal bool IsFirstSubstep => !_stepping || Substep == 0;
-
-    /// <summary>Whether a responder is called on the last substep of a step (or outside <see cref="Step"/>).</summary>
-    internal bool IsLastSubstep => !_stepping || Substep == _substeps - 1;
-
     private void DetectCollisions(float dt)
     {
         Collisions.Clear();
-        Detector.FindContacts(BodySpan, Collisions, _contactMargin, dt);
+        float margin = _contactMargin + Gravity.Length() * dt * dt;
+        Detector.FindContacts(BodySpan, Collisions, margin, dt);
         ReadOnlySpan<StaticPlane> planes = Planes;
         foreach (RigidBody body in BodySpan)
         {
             for (int p = 0; p < planes.Length; p++)
             {
-                if (ContactGeometry.TryCollide(body, planes[p], p, Ground, _contactMargin, dt, out Contact contact))
+                if (ContactGeometry.TryCollide(body, planes[p], p, Ground, margin, dt, out Contact contact))
                 {
                     Collisions.Add(contact);
                 }
             }
         }
+
+        _impacts.BeginStep(BodySpan, margin, dt);
     }
 
-    /// <summary>Semi-implicit Euler, velocity half: v += (g + F/m) dt, ω += I_w⁻¹ τ dt.</summary>
+    /// <summary>Velocity half of semi-implicit Euler: v += (g + F/m) h, ω += I_w⁻¹ τ h.</summary>
     /// <remarks>
     /// The gyroscopic term ω × (I ω) is left out, as in most game engines; it is zero for spheres and discs,
     /// the shapes this library collides.
     /// </remarks>
-    private void IntegrateVelocities(float dt)
+    private void IntegrateVelocities(float h)
     {
         foreach (RigidBody body in BodySpan)
         {
             if (body.IsDynamic)
             {
-                body.linearVelocity += (Gravity + body.force * body.inverseMass) * dt;
-                body.angularVelocity += body.inverseInertiaWorld.Transform(body.torque) * dt;
-            }
-        }
-    }
-
-    /// <summary>
-    /// Semi-implicit Euler, position half, with the new velocities: x += v dt, q += ½ (ω, 0) q dt, renormalised.
-    /// Static bodies never move; kinematic bodies move with their set velocity.
-    /// </summary>
-    private void IntegratePositions(float dt)
-    {
-        foreach (RigidBody body in BodySpan)
-        {
-            if (body.Type == BodyType.Static)
-            {
-                continue;
-            }
-
-            body.position += body.linearVelocity * dt;
-            Vector3 w = body.angularVelocity;
-            if (w != Vector3.Zero)
-            {
-                Quaternion q = body.orientation;
-                Quaternion spin = new Quaternion(w, 0) * q;
-                q = new Quaternion(q.X + 0.5f * dt * spin.X, q.Y + 0.5f * dt * spin.Y, q.Z + 0.5f * dt * spin.Z, q.W + 0.5f * dt * spin.W);
-                body.orientation = Quaternion.Normalize(q);
-                body.UpdateInverseInertiaWorld();
+                body.linearVelocity += (Gravity + body.force * body.inverseMass) * h;
+                body.angularVelocity += body.inverseInertiaWorld.Transform(body.torque) * h;
             }
         }
     }

@@ -11,12 +11,8 @@ namespace SimpleDynamics.Response;
 /// <remarks>
 /// <para><b>Normal impulse</b> (eq. 16): J = −(1 + ε) v_12·n / (1/m_1 + 1/m_2 + J_α), applied as +J n to A and
 /// −J n to B (eq. 6, 15). Afterwards the relative normal velocity is −ε times what it was (eq. 9, 14).</para>
-/// <para><b>In a world</b> the bounce speed is ε times the smaller of the approach now and
-/// <see cref="Contact.ApproachVelocity"/>, the approach found at detection before the step's gravity, and it is
-/// given once per step: a ball resting on the ground, which gravity pulls into it by g·dt each step, is then
-/// stopped instead of being thrown up by ε g dt (it would hop and gain energy), and a contact whose approach
-/// was slowed since detection never bounces faster than it now arrives. For a contact made and answered on its
-/// own the two velocities are the same.</para>
+/// <para><b>In a world</b> it is called at each collision's time of impact, with the velocities the bodies have
+/// at that moment, so the bounce of eq. 9 returns exactly the speed they arrive with.</para>
 /// <para><b>Tangential impulse.</b> With the sliding velocity v_t = v_12' − (v_12'·n) n left after the normal
 /// impulse and its direction t = v_t/|v_t|, the impulse that stops the sliding along t is computed like the
 /// normal one, J_t = −|v_t| / k_t with k_t the denominator of eq. 16 taken along t, then clamped to
@@ -77,6 +73,7 @@ public sealed class ImpulseCollisionResponder : PairwiseResponder
     /// <inheritdoc />
     public override void ResolveVelocity(ref Contact contact)
     {
+        Guard.ContactBodies(contact, nameof(contact));
         var a = VelocityState.Of(contact.BodyA);
         var b = VelocityState.Of(contact.BodyB);
         Vector3 n = contact.Normal;
@@ -91,12 +88,10 @@ public sealed class ImpulseCollisionResponder : PairwiseResponder
             return; // separating or resting (listing 3), or two infinite masses
         }
 
-        // 1. Normal impulse, eq. 16 (|n|² = 1 for a unit normal): J = −(v_12·n + ε v_n0) / denominator. The bounce
-        //    ε v_n0 (eq. 9) takes the smaller of the approach now and the approach the contact was found with, once
-        //    per step. For a contact answered on its own the two are equal and this is eq. 16's −(1 + ε) v_12·n.
+        // 1. Normal impulse, eq. 16 (|n|² = 1 for a unit normal): J = −(1 + ε) v_12·n / denominator, the impulse
+        //    that leaves the relative normal velocity at −ε v_12·n (the bounce of eq. 9).
         float restitution = Mixing.Restitution(contact, Restitution);
-        float approach = MathF.Max(normalVelocity, MathF.Min(contact.ApproachVelocity, 0f));
-        float bounce = contact.Answered ? 0f : -restitution * approach;
+        float bounce = -restitution * normalVelocity;
 
         // 2. Then the tangential impulse (the tutorial's exercise): Coulomb friction along the sliding direction.
         float friction = Mixing.Friction(contact, Friction);
@@ -104,8 +99,7 @@ public sealed class ImpulseCollisionResponder : PairwiseResponder
 
         a.StoreTo(contact.BodyA);
         b.StoreTo(contact.BodyB);
-        contact.NormalImpulse = normalImpulse;
-        contact.TangentImpulse = tangentImpulse;
-        contact.Answered = true;
+        contact.NormalImpulse += normalImpulse;
+        contact.TangentImpulse += tangentImpulse;
     }
 }

@@ -20,6 +20,7 @@ public sealed class PerfectlyInelasticResponder : PairwiseResponder
     /// <inheritdoc />
     public override void ResolveVelocity(ref Contact contact)
     {
+        Guard.ContactBodies(contact, nameof(contact));
         RigidBody a = contact.BodyA, b = contact.BodyB;
         if (!a.IsDynamic && !b.IsDynamic)
         {
@@ -46,8 +47,9 @@ public sealed class PerfectlyInelasticResponder : PairwiseResponder
         }
 
         Vector3 impulse = a.IsDynamic ? a.mass * (common - a.linearVelocity) : b.mass * (b.linearVelocity - common);
-        contact.NormalImpulse = Vector3.Dot(impulse, contact.Normal);
-        contact.TangentImpulse = (impulse - contact.NormalImpulse * contact.Normal).Length();
+        float normalImpulse = Vector3.Dot(impulse, contact.Normal);
+        contact.NormalImpulse += normalImpulse;
+        contact.TangentImpulse += (impulse - normalImpulse * contact.Normal).Length();
         if (a.IsDynamic)
         {
             a.linearVelocity = common;

@@ -18,6 +18,7 @@ public sealed class ProjectionResponder : PairwiseResponder
     /// <inheritdoc />
     public override void ResolvePosition(ref Contact contact)
     {
+        Guard.ContactBodies(contact, nameof(contact));
         RigidBody a = contact.BodyA, b = contact.BodyB;
         float inverseMassSum = a.inverseMass + b.inverseMass;
         if (contact.Penetration <= 0 || inverseMassSum == 0)

@@ -13,19 +13,6 @@ internal static class WorldMeasure
 
     public static float MaxSpeed(World world) => world.Bodies.Max(b => b.LinearVelocity.Length());
 
-    /// <summary>
-    /// The energy that semi-implicit Euler keeps constant in free flight under gravity, with substep h:
-    /// H = KE + PE + ½ h Σ m (g·v). The plain mechanical energy E = KE + PE swings by ½ h m |g·v| around it within
-    /// a flight (it falls ½ g² h² per substep on the way down and is given back at a bounce), so "energy never
-    /// rises" is a statement about H; E itself stays within that swing of it.
-    /// </summary>
-    public static double IntegratorEnergy(World world)
-    {
-        float h = 1f / 60f / world.Substeps;
-        double correction = world.Bodies.Where(b => b.IsDynamic).Sum(b => 0.5 * h * b.Mass * (double)Vector3.Dot(world.Gravity, b.LinearVelocity));
-        return world.Diagnostics.MechanicalEnergy + correction;
-    }
-
     public static bool InsideBox(World world, Vector3 min, Vector3 max, float tolerance) =>
         world.Bodies.All(b =>
             b.Position.X >= min.X - tolerance && b.Position.X <= max.X + tolerance &&

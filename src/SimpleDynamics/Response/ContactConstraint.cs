@@ -1,0 +1,38 @@
+using System.Numerics;
+
+namespace SimpleDynamics.Response;
+
+/// <summary>
+/// One contact as the sequential-impulse solver works on it. Bodies are slots in the solver's body arrays (slot 0 is
+/// the fixed ground). The geometry (normal, tangents, lever arms and what a unit impulse does to each body's spin)
+/// is measured again at the start of every substep from the bodies' positions, so that the equal and opposite
+/// impulses act along the current line of contact and keep angular momentum.
+/// </summary>
+internal struct ContactConstraint
+{
+    public int A, B;
+
+    // Geometry, measured each substep.
+    public Vector3 Normal, Tangent1, Tangent2;
+    public Vector3 RA, RB;
+    public Vector3 SpinA1, SpinB1, SpinA2, SpinB2; // I⁻¹ (r × t) for each tangent (eq. 15); for spheres r × n = 0
+    public float NormalMass, TangentMass1, TangentMass2; // 1 / the denominator of eq. 16 along n, t1, t2
+
+    /// <summary>Whether the contact is solved in this substep: touching and not colliding.</summary>
+    public bool Active;
+
+    /// <summary>Whether A is the upper body along gravity (B lies below it, or is the ground), for shock propagation.</summary>
+    public bool AIsUpper;
+
+    // Material, fixed for the step.
+    public float Friction;
+    public float RadiusA, RadiusB;
+    public float PlaneOffset; // NaN unless B is the ground of a plane
+
+    // Accumulated impulses: the normal one, and friction as a world vector between substeps (the tangents turn).
+    public float NormalImpulse, FrictionImpulse1, FrictionImpulse2;
+    public Vector3 FrictionImpulse;
+    public float StepNormalImpulse, StepFrictionImpulse;
+
+    public readonly bool IsPlaneContact => !float.IsNaN(PlaneOffset);
+}

@@ -1,0 +1,104 @@
+using System;
+using System.Numerics;
+using SimpleDynamics.Bodies;
+using SimpleDynamics.Collision;
+
+namespace SimpleDynamics.Response;
+
+/// <summary>The position pass: the projection of listing 2 as non-linear Gauss–Seidel sweeps.</summary>
+public sealed partial class SequentialImpulseSolver
+{
+    private void CorrectPositions(ReadOnlySpan<RigidBody> bodies, int count)
+    {
+        if (_positionIterations == 0 || count == 0)
+        {
+            return;
+        }
+
+        for (int i = 0; i < bodies.Length; i++)
+        {
+            _positions[_slotOf[i]] = bodies[i].position;
+        }
+
+        count = Math.Min(count, _prepared);
+        for (int iteration = 0; iteration < _positionIterations; iteration++)
+        {
+            for (int k = 0; k < count; k++)
+            {
+                CorrectPosition(ref _constraints[k], shock: false, _correctionFactor);
+            }
+        }
+
+        if (_gravity != Vector3.Zero)
+        {
+            float gravityLength = _gravity.Length();
+            for (int k = 0; k < count; k++)
+            {
+                // Contacts that carry weight (normal within about 45° of vertical) propagate the shock; the others
+                // are corrected in full, split by inverse mass.
+                ref ContactConstraint c = ref _constraints[k];
+                bool carriesWeight = MathF.Abs(Vector3.Dot(c.Normal, _gravity)) > 0.7f * gravityLength;
+                CorrectPosition(ref c, shock: carriesWeight, factor: 1f);
+            }
+        }
+
+        for (int i = 0; i < bodies.Length; i++)
+        {
+            if (bodies[i].IsDynamic)
+            {
+                bodies[i].position = _positions[_slotOf[i]];
+            }
+        }
+    }
+
+    /// <summary>
+    /// Listing 2 as a Gauss–Seidel position sweep: measure the contact at the current positions and push the
+    /// bodies apart along the normal, split by inverse mass, by a bounded share of the depth beyond the slop. With
+    /// <paramref name="shock"/> (the last, bottom-up sweep under gravity) the whole depth beyond the slop is removed
+    /// by moving the upper body alone. <paramref name="factor"/> is the share of the excess depth removed.
+    /// </summary>
+    private void CorrectPosition(ref ContactConstraint c, bool shock, float factor)
+    {
+        float inverseMassA = _bodies[c.A].InverseMass, inverseMassB = _bodies[c.B].InverseMass;
+        if (shock)
+        {
+            if (c.AIsUpper ? inverseMassA == 0 : inverseMassB == 0)
+            {
+                return;
+            }
+
+            inverseMassA = c.AIsUpper ? 1f : 0f;
+            inverseMassB = c.AIsUpper ? 0f : 1f;
+        }
+
+        float inverseMassSum = inverseMassA + inverseMassB;
+        if (inverseMassSum == 0)
+        {
+            return;
+        }
+
+        ref Vector3 positionA = ref _positions[c.A];
+        ref Vector3 positionB = ref _positions[c.B];
+        float penetration;
+        Vector3 normal;
+        if (c.IsPlaneContact)
+        {
+            normal = c.Normal;
+            penetration = ContactGeometry.PlanePenetration(positionA, c.RadiusA, normal, c.PlaneOffset);
+        }
+        else
+        {
+            penetration = ContactGeometry.CirclePenetration(positionA, c.RadiusA, positionB, c.RadiusB, out normal);
+        }
+
+        float correction = shock ? penetration - _slop : MathF.Min(factor * (penetration - _slop), _maxCorrection);
+        if (correction <= 0)
+        {
+            return;
+        }
+
+        float share = correction / inverseMassSum;
+        positionA += normal * (share * inverseMassA);
+        positionB -= normal * (share * inverseMassB);
+    }
+}

@@ -1,0 +1,201 @@
+using System;
+using System.Numerics;
+using SimpleDynamics.Bodies;
+using SimpleDynamics.Collision;
+using SimpleDynamics.Mathematics;
+
+namespace SimpleDynamics.Response;
+
+/// <summary>The solver's working copies of bodies and contacts: gathered, ordered, prepared and measured.</summary>
+public sealed partial class SequentialImpulseSolver
+{
+    private readonly HeightOrder _heightOrder = new();
+    private VelocityState[] _bodies = new VelocityState[16];
+    private Vector3[] _positions = new Vector3[16];
+    private ContactConstraint[] _constraints = new ContactConstraint[16];
+    private int[] _order = new int[16];
+    private int[] _bodyOrder = new int[16];
+    private int[] _slotOf = new int[16];
+    private float[] _bodyHeights = new float[16];
+    private float[] _radii = new float[16];
+    private Contact[] _arranged = new Contact[16];
+    private float[] _heights = new float[16];
+    private int _prepared;
+    private Vector3 _gravity;
+
+    /// <summary>
+    /// Gives each body a slot in contiguous arrays; slot 0 is the ground (all zero). The slots follow the bodies'
+    /// height along gravity, like the contacts (<see cref="OrderAlongGravity"/>), so that a sweep finds the bodies of
+    /// neighbouring contacts close together in memory instead of anywhere in a large world.
+    /// </summary>
+    private void GatherBodies(ReadOnlySpan<RigidBody> bodies, Vector3 gravity)
+    {
+        int n = bodies.Length;
+        Buffers.EnsureCapacity(ref _bodies, n + 1);
+        Buffers.EnsureCapacity(ref _positions, n + 1);
+        Buffers.EnsureCapacity(ref _bodyOrder, n);
+        Buffers.EnsureCapacity(ref _slotOf, n);
+        Buffers.EnsureCapacity(ref _bodyHeights, n);
+        Buffers.EnsureCapacity(ref _radii, n + 1);
+        for (int i = 0; i < n; i++)
+        {
+            _bodyHeights[i] = -Vector3.Dot(bodies[i].position, gravity);
+        }
+
+        _gravity = gravity;
+        _heightOrder.Sort(_bodyHeights.AsSpan(0, n), _bodyOrder.AsSpan(0, n));
+        for (int k = 0; k < n; k++)
+        {
+            _slotOf[_bodyOrder[k]] = k + 1;
+        }
+
+        _bodies[0] = default;
+        _positions[0] = Vector3.Zero;
+        _radii[0] = 0;
+        for (int i = 0; i < n; i++)
+        {
+            _radii[_slotOf[i]] = bodies[i].radius;
+        }
+    }
+
+    /// <summary>Copies velocities, masses, world inverse inertia and positions as they are at the start of a substep.</summary>
+    private void GatherState(ReadOnlySpan<RigidBody> bodies)
+    {
+        for (int i = 0; i < bodies.Length; i++)
+        {
+            int slot = _slotOf[i];
+            _bodies[slot] = VelocityState.Of(bodies[i]);
+            _positions[slot] = bodies[i].position;
+        }
+    }
+
+    private void ScatterVelocities(ReadOnlySpan<RigidBody> bodies)
+    {
+        for (int i = 0; i < bodies.Length; i++)
+        {
+            _bodies[_slotOf[i]].StoreTo(bodies[i]);
+        }
+    }
+
+    /// <summary>
+    /// Visits contacts from the bottom of a pile upwards (along gravity), so that each Gauss–Seidel sweep carries
+    /// support up through a stack instead of down through it.
+    /// </summary>
+    private void OrderAlongGravity(Span<Contact> contacts, Vector3 gravity)
+    {
+        Buffers.EnsureCapacity(ref _order, contacts.Length);
+        Buffers.EnsureCapacity(ref _heights, contacts.Length);
+        for (int i = 0; i < contacts.Length; i++)
+        {
+            _heights[i] = -Vector3.Dot(contacts[i].Point, gravity);
+        }
+
+        _heightOrder.Sort(_heights.AsSpan(0, contacts.Length), _order.AsSpan(0, contacts.Length));
+    }
+
+    /// <summary>
+    /// Puts the contacts in the order they are solved (<see cref="OrderAlongGravity"/>), so that every pass over
+    /// contacts and constraints walks both arrays front to back: constraint k is contact k.
+    /// </summary>
+    private void ArrangeContacts(Span<Contact> contacts)
+    {
+        Buffers.EnsureCapacity(ref _arranged, contacts.Length);
+        for (int k = 0; k < contacts.Length; k++)
+        {
+            _arranged[k] = contacts[_order[k]];
+        }
+
+        _arranged.AsSpan(0, contacts.Length).CopyTo(contacts);
+        Array.Clear(_arranged, 0, contacts.Length);
+    }
+
+    /// <summary>
+    /// What stays the same for a contact during the step: its bodies' slots, radii, friction and last step's impulses
+    /// for the warm start. Prepares the contacts from <see cref="_prepared"/> on (the impact pass may add some).
+    /// </summary>
+    private void PrepareConstraints(Span<Contact> contacts)
+    {
+        Buffers.EnsureCapacity(ref _constraints, contacts.Length);
+        for (int k = _prepared; k < contacts.Length; k++)
+        {
+            ref Contact contact = ref contacts[k];
+            ref ContactConstraint c = ref _constraints[k];
+            c = default;
+            c.A = SlotOf(contact.BodyA);
+            c.B = SlotOf(contact.BodyB);
+            c.Friction = _mixing.Friction(contact, _friction);
+            _ = _mixing.Restitution(contact, _restitution); // a rule out of range throws now, before anything moves
+            c.RadiusA = _radii[c.A];
+            c.RadiusB = _radii[c.B];
+            c.PlaneOffset = contact.IsPlaneContact ? contact.PlaneOffset : float.NaN;
+            if (WarmStarting && _cache.TryGet(contact.Key, out float normalImpulse, out Vector3 frictionImpulse))
+            {
+                c.NormalImpulse = normalImpulse;
+                c.FrictionImpulse = frictionImpulse;
+            }
+        }
+
+        _prepared = contacts.Length;
+    }
+
+    /// <summary>
+    /// Measures every contact at the start of a substep: the normal along the current line of centres (or the
+    /// plane's), tangents, lever arms r = p − c (eq. 16), the spins I⁻¹ (r × t) a unit friction impulse causes (eq. 15)
+    /// and the effective masses. A contact is solved here if it touches, or all but touches (a gap within
+    /// <see cref="Slop"/>, as the position pass leaves a pile), and approaches no faster than
+    /// <see cref="RestitutionThreshold"/>; one that is apart or colliding is left to the impact pass, and its
+    /// accumulated impulses are dropped.
+    /// </summary>
+    private void MeasureConstraints(int count)
+    {
+        for (int k = 0; k < count; k++)
+        {
+            ref ContactConstraint c = ref _constraints[k];
+            ref VelocityState a = ref _bodies[c.A];
+            ref VelocityState b = ref _bodies[c.B];
+            Vector3 positionA = _positions[c.A];
+            float penetration;
+            if (c.IsPlaneContact)
+            {
+                penetration = ContactGeometry.PlanePenetration(positionA, c.RadiusA, c.Normal = PlaneNormal(k), c.PlaneOffset);
+            }
+            else
+            {
+                penetration = ContactGeometry.CirclePenetration(positionA, c.RadiusA, _positions[c.B], c.RadiusB, out c.Normal);
+            }
+
+            Vector3 point = positionA - c.Normal * (c.RadiusA - 0.5f * penetration);
+            c.RA = point - positionA;
+            c.RB = point - _positions[c.B];
+            float normalVelocity = Vector3.Dot(ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB), c.Normal);
+            c.Active = penetration >= -_slop && normalVelocity >= -_restitutionThreshold;
+            c.AIsUpper = c.B == 0 || Vector3.Dot(positionA - _positions[c.B], _gravity) <= 0;
+            if (!c.Active)
+            {
+                c.NormalImpulse = 0;
+                c.FrictionImpulse = Vector3.Zero;
+                c.FrictionImpulse1 = c.FrictionImpulse2 = 0;
+                continue;
+            }
+
+            Vectors.Tangents(c.Normal, out c.Tangent1, out c.Tangent2);
+            c.SpinA1 = a.InverseInertia.Transform(Vector3.Cross(c.RA, c.Tangent1));
+            c.SpinB1 = b.InverseInertia.Transform(Vector3.Cross(c.RB, c.Tangent1));
+            c.SpinA2 = a.InverseInertia.Transform(Vector3.Cross(c.RA, c.Tangent2));
+            c.SpinB2 = b.InverseInertia.Transform(Vector3.Cross(c.RB, c.Tangent2));
+            float inverseMassSum = a.InverseMass + b.InverseMass;
+            c.NormalMass = InverseOrZero(inverseMassSum); // eq. 16 along n: r × n = 0 for spheres, so J_α = 0
+            c.TangentMass1 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(inverseMassSum, c.SpinA1, c.RA, c.SpinB1, c.RB, c.Tangent1));
+            c.TangentMass2 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(inverseMassSum, c.SpinA2, c.RA, c.SpinB2, c.RB, c.Tangent2));
+            c.FrictionImpulse1 = Vector3.Dot(c.FrictionImpulse, c.Tangent1);
+            c.FrictionImpulse2 = Vector3.Dot(c.FrictionImpulse, c.Tangent2);
+            ClampFriction(ref c);
+        }
+    }
+
+    private Vector3 PlaneNormal(int k) => _step!.Contacts[k].Normal;
+
+    private int SlotOf(RigidBody body) => body.index < 0 ? 0 : _slotOf[body.index]; // the ground (index −1) is slot 0
+
+    private static float InverseOrZero(float denominator) => denominator > 0 ? 1f / denominator : 0f;
+}

@@ -1,0 +1,201 @@
+using System;
+using System.Numerics;
+using SimpleDynamics.Collision;
+
+namespace SimpleDynamics.Response;
+
+/// <summary>The velocity sweeps: warm start, Gauss–Seidel iterations, and the impulses' bookkeeping.</summary>
+public sealed partial class SequentialImpulseSolver
+{
+    /// <summary>
+    /// Applies the impulses accumulated so far (last step's from the cache on the first substep, the previous
+    /// substep's after that), so that a resting pile starts each substep almost solved. Without warm starting they
+    /// start from zero.
+    /// </summary>
+    private void WarmStart(int count)
+    {
+        for (int k = 0; k < count; k++)
+        {
+            ref ContactConstraint c = ref _constraints[k];
+            if (!c.Active)
+            {
+                continue;
+            }
+
+            if (!WarmStarting)
+            {
+                c.NormalImpulse = c.FrictionImpulse1 = c.FrictionImpulse2 = 0;
+                continue;
+            }
+
+            Apply(ref c, c.NormalImpulse, c.FrictionImpulse1, c.FrictionImpulse2);
+        }
+    }
+
+    /// <summary>
+    /// <see cref="VelocityIterations"/> Gauss–Seidel sweeps over every contact, bottom-up, then up to
+    /// <see cref="ExtraIterations"/> more until one has converged.
+    /// </summary>
+    private void Sweeps(int count)
+    {
+        for (int iteration = 0; iteration < _velocityIterations; iteration++)
+        {
+            Sweep(count);
+        }
+
+        for (int extra = 0; extra < _extraIterations && !Sweep(count); extra++)
+        {
+        }
+    }
+
+    /// <summary>
+    /// One Gauss–Seidel sweep over every contact, bottom-up. Returns whether it converged: no normal impulse
+    /// changed by more than <see cref="ConvergenceTolerance"/> times the largest one.
+    /// </summary>
+    private bool Sweep(int count)
+    {
+        float largestChange = 0, largestImpulse = 0;
+        for (int k = 0; k < count; k++)
+        {
+            ref ContactConstraint c = ref _constraints[k];
+            if (!c.Active)
+            {
+                continue;
+            }
+
+            float before = c.NormalImpulse;
+            SolveContact(ref c);
+            largestChange = MathF.Max(largestChange, MathF.Abs(c.NormalImpulse - before));
+            largestImpulse = MathF.Max(largestImpulse, c.NormalImpulse);
+        }
+
+        return largestChange <= _convergenceTolerance * largestImpulse;
+    }
+
+    /// <summary>
+    /// One contact's impulses given what all others did so far: friction (Coulomb, accumulated and clamped to the
+    /// disc |P_t| ≤ μ P_n), then the normal impulse of eq. 16 that stops the approach, accumulated and clamped to ≥ 0
+    /// (a contact pushes, never pulls).
+    /// </summary>
+    private void SolveContact(ref ContactConstraint c)
+    {
+        ref VelocityState a = ref _bodies[c.A];
+        ref VelocityState b = ref _bodies[c.B];
+
+        // A contact that pushes nothing has no friction either (|P_t| ≤ μ P_n = 0): skip the work.
+        if (c.NormalImpulse > 0 || c.FrictionImpulse1 != 0 || c.FrictionImpulse2 != 0)
+        {
+            Vector3 relative = ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB); // eq. 13–14
+            float old1 = c.FrictionImpulse1, old2 = c.FrictionImpulse2;
+            c.FrictionImpulse1 -= c.TangentMass1 * Vector3.Dot(relative, c.Tangent1);
+            c.FrictionImpulse2 -= c.TangentMass2 * Vector3.Dot(relative, c.Tangent2);
+            ClampFriction(ref c);
+            Apply(ref c, 0f, c.FrictionImpulse1 - old1, c.FrictionImpulse2 - old2);
+        }
+
+        float normalVelocity = Vector3.Dot(ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB), c.Normal);
+        float oldNormal = c.NormalImpulse;
+        c.NormalImpulse = MathF.Max(oldNormal - c.NormalMass * normalVelocity, 0f);
+        if (c.NormalImpulse != oldNormal)
+        {
+            Apply(ref c, c.NormalImpulse - oldNormal, 0f, 0f);
+        }
+    }
+
+    /// <summary>
+    /// Applies the impulse P = p_n n + p_1 t_1 + p_2 t_2 to A and −P to B: eq. 6 for the velocities, eq. 15 for the
+    /// spins through the prepared I⁻¹ (r × t) of each tangent (the normal part turns nothing: r × n = 0).
+    /// </summary>
+    private void Apply(ref ContactConstraint c, float normal, float tangent1, float tangent2)
+    {
+        ref VelocityState a = ref _bodies[c.A];
+        ref VelocityState b = ref _bodies[c.B];
+        Vector3 impulse = normal * c.Normal + tangent1 * c.Tangent1 + tangent2 * c.Tangent2;
+        a.Linear += impulse * a.InverseMass;
+        a.Angular += tangent1 * c.SpinA1 + tangent2 * c.SpinA2;
+        b.Linear -= impulse * b.InverseMass;
+        b.Angular -= tangent1 * c.SpinB1 + tangent2 * c.SpinB2;
+    }
+
+    /// <summary>
+    /// Shock propagation in velocity: bottom-up, each resting contact that still approaches is stopped by changing
+    /// only its upper body (the one higher against gravity), as if the lower one, already final, were immovable.
+    /// </summary>
+    private void PropagateShock(int count)
+    {
+        for (int k = 0; k < count; k++)
+        {
+            ref ContactConstraint c = ref _constraints[k];
+            if (!c.Active)
+            {
+                continue;
+            }
+
+            ref VelocityState a = ref _bodies[c.A];
+            ref VelocityState b = ref _bodies[c.B];
+            float normalVelocity = Vector3.Dot(ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB), c.Normal);
+            if (normalVelocity >= 0)
+            {
+                continue;
+            }
+
+            if (c.AIsUpper && a.InverseMass > 0)
+            {
+                a.Linear -= normalVelocity * c.Normal; // A alone takes the whole change: v_n → 0
+            }
+            else if (!c.AIsUpper && b.InverseMass > 0)
+            {
+                b.Linear += normalVelocity * c.Normal;
+            }
+        }
+    }
+
+    private static void ClampFriction(ref ContactConstraint c)
+    {
+        float limit = c.Friction * c.NormalImpulse;
+        float squared = c.FrictionImpulse1 * c.FrictionImpulse1 + c.FrictionImpulse2 * c.FrictionImpulse2;
+        if (squared > limit * limit)
+        {
+            float scale = squared > 0 ? limit / MathF.Sqrt(squared) : 0f;
+            c.FrictionImpulse1 *= scale;
+            c.FrictionImpulse2 *= scale;
+        }
+    }
+
+    /// <summary>
+    /// Adds this substep's contact impulses to the step's totals, which the contacts report, and keeps the friction
+    /// impulse as a world vector for the next substep (whose tangents will have turned with the contact).
+    /// </summary>
+    private void AddToStepTotals(int count)
+    {
+        for (int k = 0; k < count; k++)
+        {
+            ref ContactConstraint c = ref _constraints[k];
+            if (!c.Active)
+            {
+                continue;
+            }
+
+            c.FrictionImpulse = c.FrictionImpulse1 * c.Tangent1 + c.FrictionImpulse2 * c.Tangent2;
+            c.StepNormalImpulse += c.NormalImpulse;
+            c.StepFrictionImpulse += MathF.Sqrt(c.FrictionImpulse1 * c.FrictionImpulse1 + c.FrictionImpulse2 * c.FrictionImpulse2);
+        }
+    }
+
+    /// <summary>Keeps the last substep's accumulated impulses for the next step's warm start (contact persistence).</summary>
+    private void StoreImpulses(Span<Contact> contacts)
+    {
+        int count = Math.Min(contacts.Length, _prepared);
+        _cache.BeginStep(count);
+        for (int k = 0; k < count; k++)
+        {
+            ref ContactConstraint c = ref _constraints[k];
+            ref Contact contact = ref contacts[k];
+            _cache.Store(contact.Key, c.NormalImpulse, c.FrictionImpulse);
+            contact.NormalImpulse += c.StepNormalImpulse;
+            contact.TangentImpulse += c.StepFrictionImpulse;
+        }
+
+        _cache.EndStep();
+    }
+}
