@@ -118,15 +118,18 @@ public sealed partial class SequentialImpulseSolver
     }
 
     /// <summary>
-    /// Shock propagation in velocity: bottom-up, each resting contact that still approaches is stopped by changing
-    /// only its upper body (the one higher against gravity), as if the lower one, already final, were immovable.
+    /// Shock propagation in velocity: bottom-up, each resting contact that carries weight (normal within about 45° of
+    /// vertical) and still approaches because its upper body moves down into the lower one is stopped by slowing the
+    /// upper body alone, as if the lower one, already final, were immovable. The upper body is slowed at most to rest
+    /// along the normal, never thrown up, so this only ever removes kinetic energy.
     /// </summary>
     private void PropagateShock(int count)
     {
+        float weight = 0.7f * _gravity.Length();
         for (int k = 0; k < count; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
-            if (!c.Active)
+            if (!c.Active || MathF.Abs(Vector3.Dot(c.Normal, _gravity)) <= weight)
             {
                 continue;
             }
@@ -141,11 +144,13 @@ public sealed partial class SequentialImpulseSolver
 
             if (c.AIsUpper && a.InverseMass > 0)
             {
-                a.Linear -= normalVelocity * c.Normal; // A alone takes the whole change: v_n → 0
+                float sinking = -Vector3.Dot(a.Linear, c.Normal); // A's speed into B (n points from B to A)
+                a.Linear += MathF.Min(-normalVelocity, MathF.Max(sinking, 0f)) * c.Normal;
             }
             else if (!c.AIsUpper && b.InverseMass > 0)
             {
-                b.Linear += normalVelocity * c.Normal;
+                float sinking = Vector3.Dot(b.Linear, c.Normal); // B's speed into A
+                b.Linear -= MathF.Min(-normalVelocity, MathF.Max(sinking, 0f)) * c.Normal;
             }
         }
     }

@@ -29,8 +29,9 @@ namespace SimpleDynamics.Response;
 /// opposite impulses act along the current line of contact and conserve angular momentum.</para>
 /// <para><b>Shock propagation</b> (Guendelman, Bridson and Fedkiw, "Nonconvex Rigid Bodies with Stacking",
 /// SIGGRAPH 2003, https://physbam.stanford.edu/~fedkiw/papers/stanford2003-01.pdf). Under gravity, after the sweeps,
-/// one more bottom-up pass over the resting contacts treats the lower body of each as immovable and stops any
-/// approach the sweeps left by moving the upper body alone, in velocity and (after the position sweeps) in position.
+/// one more bottom-up pass over the resting contacts that carry weight treats the lower body of each as immovable
+/// and stops any sinking the sweeps left by slowing the upper body alone (never throwing it up), in velocity, and
+/// after the position sweeps removes their depth beyond the slop by lifting the upper body alone.
 /// A few sweeps cannot carry the weight of a heavy body down through a light one (mass ratios of 1e3 converge
 /// slowly); this pass makes such stacks hold, at the price of momentum that gravity and the ground do not conserve
 /// anyway. Without gravity there is no up and down, and the pass is skipped.</para>
@@ -246,6 +247,10 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
         MeasureConstraints(contacts.Length);
         WarmStart(contacts.Length);
         Sweeps(contacts.Length);
+        if (step.Gravity != Vector3.Zero)
+        {
+            PropagateShock(contacts.Length);
+        }
 
         AddToStepTotals(contacts.Length);
         ScatterVelocities(step.Bodies);
