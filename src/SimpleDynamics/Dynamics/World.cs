@@ -49,10 +49,12 @@ public sealed partial class World
         Collisions = new CollisionData { Owner = this };
     }
 
-    /// <summary>Creates a world with the given gravity and responder.</summary>
+    /// <summary>Creates a world with the given gravity (m/s²) and responder (the default solver when null).</summary>
+    /// <exception cref="ArgumentException"><paramref name="gravity"/> is not finite.</exception>
     public World(Vector3 gravity, ICollisionResponder? responder = null)
         : this()
     {
+        Guard.Finite(gravity, nameof(gravity));
         Gravity = gravity;
         if (responder is not null)
         {
