@@ -2,7 +2,10 @@ using System;
 
 namespace SimpleDynamics;
 
-/// <summary>The working arrays of the hot path grow, never shrink, so a warm world allocates nothing.</summary>
+/// <summary>
+/// The working arrays of the hot path grow and are kept, so a warm world allocates nothing; they shrink only when
+/// asked to (<see cref="World.TrimExcess"/>).
+/// </summary>
 internal static class Buffers
 {
     /// <summary>Makes <paramref name="array"/> hold at least <paramref name="needed"/> items, at least doubling it.</summary>
@@ -11,6 +14,20 @@ internal static class Buffers
         if (array.Length < needed)
         {
             Array.Resize(ref array, Math.Max(needed, array.Length * 2));
+        }
+    }
+
+    /// <summary>
+    /// Shrinks <paramref name="array"/> to <paramref name="needed"/> items, keeping the first
+    /// <paramref name="needed"/>; does nothing (and allocates nothing) when it is no larger.
+    /// </summary>
+    public static void Shrink<T>(ref T[] array, int needed)
+    {
+        if (array.Length > needed)
+        {
+            var smaller = new T[needed];
+            Array.Copy(array, smaller, needed);
+            array = smaller;
         }
     }
 }

@@ -56,6 +56,26 @@ internal static partial class Guard
         }
     }
 
+    public static void NoNullElements<T>(ReadOnlySpan<T> items, string paramName)
+        where T : class
+    {
+        for (int i = 0; i < items.Length; i++)
+        {
+            if (items[i] is null)
+            {
+                throw new ArgumentException($"{paramName}[{i}] is null.", paramName);
+            }
+        }
+    }
+
+    public static void Finite(float value, string paramName)
+    {
+        if (!float.IsFinite(value))
+        {
+            throw new ArgumentOutOfRangeException(paramName, value, $"{paramName} must be a finite number.");
+        }
+    }
+
     public static void NotNull(object? value, string paramName)
     {
         if (value is null)

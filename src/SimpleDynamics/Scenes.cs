@@ -8,7 +8,9 @@ namespace SimpleDynamics;
 
 /// <summary>
 /// Ready-made scenes: the sample shows them, the tests check them, the benchmarks time them — all with the
-/// same geometry. Each returns a new world; randomness comes only from a seed argument.
+/// same geometry. Each returns a new world; randomness comes only from a seed argument. Each validates its own
+/// arguments and names the one at fault (restitution in [0, 1], friction ≥ 0, counts ≥ 1, radii positive, the
+/// rest finite).
 /// </summary>
 public static class Scenes
 {
@@ -18,6 +20,8 @@ public static class Scenes
     /// <summary>A ball of radius 0.5 m dropped from <paramref name="height"/> onto the ground.</summary>
     public static World DroppedBall(float restitution, float height = 3f, ICollisionResponder? responder = null)
     {
+        Guard.UnitInterval(restitution, nameof(restitution));
+        Guard.Finite(height, nameof(height));
         var world = new World(EarthGravity, responder);
         world.AddPlane(new StaticPlane(Vector3.UnitY, Vector3.Zero, restitution));
         world.Add(new RigidBody(1f, 0.5f, new Vector3(0, height, 0), Inertia.Disc(1f, 0.5f)) { Restitution = restitution });
@@ -29,6 +33,8 @@ public static class Scenes
     /// </summary>
     public static World OffCentreCollision(float restitution, float friction, ICollisionResponder? responder = null)
     {
+        Guard.UnitInterval(restitution, nameof(restitution));
+        Guard.NonNegative(friction, nameof(friction));
         var world = new World(Vector3.Zero, responder);
         var left = new RigidBody(1f, 0.5f, new Vector3(-2, 0.3f, 0), Inertia.Disc(1f, 0.5f))
         {
@@ -50,6 +56,8 @@ public static class Scenes
     public static World StruckRow(int count, float speed, float restitution = 1f, ICollisionResponder? responder = null)
     {
         Guard.AtLeast(count, 1, nameof(count));
+        Guard.Finite(speed, nameof(speed));
+        Guard.UnitInterval(restitution, nameof(restitution));
         var world = new World(EarthGravity, responder);
         world.AddPlane(new StaticPlane(Vector3.UnitY, Vector3.Zero, restitution, 0f));
         const float r = 0.5f;
@@ -71,6 +79,9 @@ public static class Scenes
     /// </summary>
     public static World SlidingBall(float speed, float friction, float radius = 0.5f, ICollisionResponder? responder = null)
     {
+        Guard.Finite(speed, nameof(speed));
+        Guard.NonNegative(friction, nameof(friction));
+        Guard.Positive(radius, nameof(radius));
         var world = new World(EarthGravity, responder);
         world.AddPlane(new StaticPlane(Vector3.UnitY, Vector3.Zero, 0f, friction));
         world.Add(new RigidBody(1f, radius, new Vector3(0, radius, 0))
@@ -90,9 +101,9 @@ public static class Scenes
     {
         Guard.AtLeast(count, 1, nameof(count));
         Guard.Positive(radius, nameof(radius));
-        if (!(radiusSpread >= 1f))
+        if (!(radiusSpread >= 1f) || !float.IsFinite(radiusSpread))
         {
-            throw new ArgumentOutOfRangeException(nameof(radiusSpread), radiusSpread, "radiusSpread must be at least 1.");
+            throw new ArgumentOutOfRangeException(nameof(radiusSpread), radiusSpread, "radiusSpread must be finite and at least 1.");
         }
 
         var random = new Random(seed);
@@ -137,6 +148,7 @@ public static class Scenes
     public static World Smash(int count, float radius = 0.1f, ICollisionResponder? responder = null)
     {
         Guard.AtLeast(count, 1, nameof(count));
+        Guard.Positive(radius, nameof(radius));
         var world = new World(Vector3.Zero, responder);
         int perRow = (int)MathF.Ceiling(MathF.Sqrt(count));
         float spacing = 2.05f * radius;
@@ -162,6 +174,8 @@ public static class Scenes
     public static World ElasticGas(int count, bool planar, int seed = 1, float radius = 0.1f, float speed = 1f)
     {
         Guard.AtLeast(count, 1, nameof(count));
+        Guard.Positive(radius, nameof(radius));
+        Guard.Finite(speed, nameof(speed));
         var random = new Random(seed);
         var solver = new SequentialImpulseSolver(restitution: 1f, friction: 0f) { RestitutionThreshold = 0f };
         var world = new World(Vector3.Zero, solver);

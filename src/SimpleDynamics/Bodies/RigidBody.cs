@@ -18,8 +18,15 @@ namespace SimpleDynamics.Bodies;
 /// <para><b>Static</b> means infinite mass: <see cref="InverseMass"/> = 0 and <see cref="InverseInertiaWorld"/> = 0,
 /// so no impulse or force moves it, and it never moves at all. A <b>kinematic</b> body also has infinite mass but
 /// moves with the velocity you give it.</para>
-/// <para>Every setter validates its value and throws an <see cref="ArgumentException"/> naming the property,
-/// leaving the body unchanged.</para>
+/// <para><b>Legal ranges.</b> Mass and radius are any positive, finite floats whose derived quantities are
+/// finite too: 1/m, the inertia tensor and its inverse (so a mass below about 3·10⁻³⁹ kg, or a tensor such as
+/// <c>Matrix3.Diagonal(1, 1, 1e-39f)</c> whose inverse overflows, is rejected). Within masses of 10⁻⁶…10⁶ kg and
+/// radii of 10⁻⁴…10⁴ m, in any combination, bodies step without NaN (tested in <c>Robustness/</c>); outside
+/// it they are accepted, but float may run out of precision in contacts between very different bodies.
+/// Forces, torques and impulses are rejected when the state they would produce (accumulated force or torque,
+/// the acceleration they cause, or the new velocities) is not finite.</para>
+/// <para>Every method and setter validates its arguments and throws an <see cref="ArgumentException"/> naming
+/// the parameter (a setter names its property), leaving the body unchanged.</para>
 /// </remarks>
 public sealed class RigidBody
 {
@@ -66,23 +73,20 @@ public sealed class RigidBody
 
     private RigidBody(float mass, float radius, Vector3 position, Matrix3 inertia, bool useSphereInertia)
     {
-        Guard.Positive(mass, nameof(mass));
+        float inverse = InverseMassOf(mass);
         Guard.Positive(radius, nameof(radius));
         Guard.Finite(position, nameof(position));
         if (useSphereInertia)
         {
             inertia = Bodies.Inertia.SolidSphere(mass, radius);
         }
-        else
-        {
-            Bodies.Inertia.Validate(inertia, nameof(inertia));
-        }
 
+        Matrix3 inverseOfInertia = Bodies.Inertia.ValidateAndInvert(inertia, nameof(inertia));
         Id = Interlocked.Increment(ref s_nextId);
         Type = BodyType.Dynamic;
         this.radius = radius;
         this.position = position;
-        SetMassUnchecked(mass, inertia);
+        SetMassValidated(mass, inverse, inertia, inverseOfInertia);
     }
 
     private RigidBody(BodyType type, float radius, Vector3 position, Vector3 velocity)
@@ -162,18 +166,22 @@ public sealed class RigidBody
         }
     }
 
-    /// <summary>Rotation from body to world coordinates; normalised when set.</summary>
+    /// <summary>
+    /// Rotation from body to world coordinates; normalised when set, so any finite, non-zero quaternion is
+    /// accepted (however large or small its components).
+    /// </summary>
+    /// <exception cref="ArgumentException">The quaternion is zero or not finite; the body is unchanged.</exception>
     public Quaternion Orientation
     {
         get => orientation;
         set
         {
-            if (!Vectors.IsFinite(value) || value.LengthSquared() < 1e-12f)
+            if (!Vectors.TryNormalize(value, out Quaternion unit))
             {
-                throw new ArgumentException("Orientation must be a finite, non-zero quaternion.", nameof(Orientation));
+                throw new ArgumentException($"Orientation must be a finite, non-zero quaternion, but was {value}.", nameof(Orientation));
             }
 
-            orientation = Quaternion.Normalize(value);
+            orientation = unit;
             UpdateInverseInertiaWorld();
         }
     }
@@ -249,57 +257,87 @@ public sealed class RigidBody
     public World? World { get; internal set; }
 
     /// <summary>Changes mass and body-frame inertia of a dynamic body.</summary>
+    /// <param name="mass">Mass in kg; positive, finite, with a finite inverse.</param>
+    /// <param name="inertia">Body-frame inertia tensor (kg·m²), symmetric positive definite with an inverse finite in float.</param>
     /// <exception cref="ArgumentException">An argument is out of range; the body is unchanged.</exception>
     /// <exception cref="InvalidOperationException">The body is not dynamic.</exception>
     public void SetMass(float mass, Matrix3 inertia)
     {
-        Guard.Positive(mass, nameof(mass));
-        Bodies.Inertia.Validate(inertia, nameof(inertia));
+        // Everything that can throw runs before anything is stored.
+        float inverse = InverseMassOf(mass);
+        Matrix3 inverseOfInertia = Bodies.Inertia.ValidateAndInvert(inertia, nameof(inertia));
         if (!IsDynamic)
         {
             throw new InvalidOperationException($"A {Type} body has infinite mass; only a dynamic body's mass can be set.");
         }
 
-        SetMassUnchecked(mass, inertia);
+        SetMassValidated(mass, inverse, inertia, inverseOfInertia);
     }
 
-    /// <summary>Adds a force through the centre of mass, applied during the next step.</summary>
+    /// <summary>Adds a force (N) through the centre of mass, applied during the next step.</summary>
+    /// <exception cref="ArgumentException">The force, the accumulated force or the acceleration it causes is not
+    /// finite; the body is unchanged.</exception>
     public void ApplyForce(Vector3 force)
     {
         Guard.Finite(force, nameof(force));
-        this.force += force;
+        this.force = AccumulatedForce(force);
     }
 
-    /// <summary>Adds a force at a world point; it also adds the torque (point − c) × F.</summary>
+    /// <summary>Adds a force (N) at a world point; it also adds the torque (point − c) × F.</summary>
+    /// <exception cref="ArgumentException">An argument, or the force, torque or acceleration it results in, is not
+    /// finite; the body is unchanged.</exception>
     public void ApplyForce(Vector3 force, Vector3 point)
     {
         Guard.Finite(force, nameof(force));
         Guard.Finite(point, nameof(point));
-        this.force += force;
-        torque += Vector3.Cross(point - position, force);
+        Vector3 newForce = AccumulatedForce(force);
+        Vector3 arm = LeverArm(point);
+        Vector3 newTorque = AccumulatedTorque(Vector3.Cross(arm, force), nameof(force));
+        this.force = newForce;
+        torque = newTorque;
     }
 
-    /// <summary>Adds a torque (world frame), applied during the next step.</summary>
+    /// <summary>Adds a torque (N·m, world frame), applied during the next step.</summary>
+    /// <exception cref="ArgumentException">The torque, the accumulated torque or the angular acceleration it causes
+    /// is not finite; the body is unchanged.</exception>
     public void ApplyTorque(Vector3 torque)
     {
         Guard.Finite(torque, nameof(torque));
-        this.torque += torque;
+        this.torque = AccumulatedTorque(torque, nameof(torque));
     }
 
     /// <summary>
     /// Applies an impulse (N·s) at a world point at once: Δv = J/m (eq. 6), Δω = I_w⁻¹ (r × J) (eq. 15).
     /// Does nothing to a static or kinematic body.
     /// </summary>
+    /// <exception cref="ArgumentException">An argument or a resulting velocity is not finite; the body is unchanged.</exception>
     public void ApplyImpulse(Vector3 impulse, Vector3 point)
     {
         Guard.Finite(impulse, nameof(impulse));
         Guard.Finite(point, nameof(point));
-        linearVelocity += impulse * inverseMass;
-        angularVelocity += inverseInertiaWorld.Transform(Vector3.Cross(point - position, impulse));
+        Vector3 newLinear = linearVelocity + impulse * inverseMass;
+        if (!Vectors.IsFinite(newLinear))
+        {
+            throw new ArgumentException($"The impulse {impulse} would give body #{Id} a velocity that is not finite.", nameof(impulse));
+        }
+
+        Vector3 newAngular = angularVelocity + inverseInertiaWorld.Transform(Vector3.Cross(LeverArm(point), impulse));
+        if (!Vectors.IsFinite(newAngular))
+        {
+            throw new ArgumentException($"The impulse {impulse} at {point} would give body #{Id} an angular velocity that is not finite.", nameof(impulse));
+        }
+
+        linearVelocity = newLinear;
+        angularVelocity = newAngular;
     }
 
     /// <summary>Velocity of the material point at a world position: v + ω × (p − c) (eq. 12–13).</summary>
-    public Vector3 VelocityAt(Vector3 point) => linearVelocity + Vector3.Cross(angularVelocity, point - position);
+    /// <exception cref="ArgumentException"><paramref name="point"/> is not finite.</exception>
+    public Vector3 VelocityAt(Vector3 point)
+    {
+        Guard.Finite(point, nameof(point));
+        return linearVelocity + Vector3.Cross(angularVelocity, point - position);
+    }
 
     /// <summary>Linear momentum m v (kg·m/s); zero for infinite-mass bodies, which the diagnostics leave out.</summary>
     public Vector3 LinearMomentum => IsDynamic ? mass * linearVelocity : Vector3.Zero;
@@ -308,8 +346,10 @@ public sealed class RigidBody
     /// Angular momentum about a fixed world point: I_w ω + (c − point) × m v (eq. 11 plus the orbital part);
     /// zero for infinite-mass bodies.
     /// </summary>
+    /// <exception cref="ArgumentException"><paramref name="point"/> is not finite.</exception>
     public Vector3 AngularMomentumAbout(Vector3 point)
     {
+        Guard.Finite(point, nameof(point));
         if (!IsDynamic)
         {
             return Vector3.Zero;
@@ -352,13 +392,68 @@ public sealed class RigidBody
         torque = Vector3.Zero;
     }
 
-    private void SetMassUnchecked(float mass, Matrix3 inertia)
+    /// <summary>1/m, after checking that m is positive and finite and that 1/m is finite too.</summary>
+    private static float InverseMassOf(float mass)
+    {
+        Guard.Positive(mass, nameof(mass));
+        float inverse = 1f / mass;
+        if (!float.IsFinite(inverse))
+        {
+            throw new ArgumentOutOfRangeException(nameof(mass), mass, "mass is so small that its inverse is not finite in float.");
+        }
+
+        return inverse;
+    }
+
+    private void SetMassValidated(float mass, float inverseMass, Matrix3 inertia, Matrix3 inverseInertia)
     {
         this.mass = mass;
-        inverseMass = 1f / mass;
+        this.inverseMass = inverseMass;
         this.inertia = inertia;
-        inverseInertia = inertia.Inverse();
+        this.inverseInertia = inverseInertia;
         UpdateInverseInertiaWorld();
+    }
+
+    /// <summary>point − c, checked: two finite points can still be more than float's range apart.</summary>
+    private Vector3 LeverArm(Vector3 point)
+    {
+        Vector3 arm = point - position;
+        if (!Vectors.IsFinite(arm))
+        {
+            throw new ArgumentException($"point {point} is too far from body #{Id} at {position} for float.", nameof(point));
+        }
+
+        return arm;
+    }
+
+    /// <summary>
+    /// The force after adding <paramref name="added"/>, checked so that it, and the acceleration F/m the next step
+    /// will integrate, stay finite.
+    /// </summary>
+    private Vector3 AccumulatedForce(Vector3 added)
+    {
+        Vector3 sum = force + added;
+        if (!Vectors.IsFinite(sum) || !Vectors.IsFinite(sum * inverseMass))
+        {
+            throw new ArgumentException($"Adding force {added} would make body #{Id}'s force or acceleration not finite.", "force");
+        }
+
+        return sum;
+    }
+
+    /// <summary>
+    /// The torque after adding <paramref name="added"/>, checked so that it, and the angular acceleration
+    /// I_w⁻¹ τ the next step will integrate, stay finite.
+    /// </summary>
+    private Vector3 AccumulatedTorque(Vector3 added, string paramName)
+    {
+        Vector3 sum = torque + added;
+        if (!Vectors.IsFinite(sum) || !Vectors.IsFinite(inverseInertiaWorld.Transform(sum)))
+        {
+            throw new ArgumentException($"Adding torque {added} would make body #{Id}'s torque or angular acceleration not finite.", paramName);
+        }
+
+        return sum;
     }
 
     private void ThrowIfStaticAndMoving(Vector3 value, string property)

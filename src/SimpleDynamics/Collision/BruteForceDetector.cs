@@ -15,6 +15,7 @@ public sealed class BruteForceDetector : ICollisionDetector
         Guard.NotNull(collisions, nameof(collisions));
         Guard.NonNegative(margin, nameof(margin));
         Guard.NonNegative(lookahead, nameof(lookahead));
+        Guard.NoNullElements(bodies, nameof(bodies));
         for (int i = 0; i < bodies.Length; i++)
         {
             for (int j = i + 1; j < bodies.Length; j++)

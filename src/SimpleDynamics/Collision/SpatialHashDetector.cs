@@ -44,6 +44,7 @@ public sealed class SpatialHashDetector : ICollisionDetector
         Guard.NotNull(collisions, nameof(collisions));
         Guard.NonNegative(margin, nameof(margin));
         Guard.NonNegative(lookahead, nameof(lookahead));
+        Guard.NoNullElements(bodies, nameof(bodies));
         int n = bodies.Length;
         if (n < 2)
         {

@@ -45,10 +45,20 @@ public readonly struct StaticPlane
     public float? Friction { get; }
 
     /// <summary>Signed distance of a point from the plane; positive on the free side.</summary>
-    public float DistanceTo(Vector3 point) => Vector3.Dot(Normal, point) - Offset;
+    /// <exception cref="ArgumentException"><paramref name="point"/> is not finite.</exception>
+    public float DistanceTo(Vector3 point)
+    {
+        Guard.Finite(point, nameof(point));
+        return Vector3.Dot(Normal, point) - Offset;
+    }
 
     /// <summary>Ground at height <paramref name="y"/>, facing +y.</summary>
-    public static StaticPlane Ground(float y = 0f) => new(Vector3.UnitY, new Vector3(0, y, 0));
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="y"/> is not finite.</exception>
+    public static StaticPlane Ground(float y = 0f)
+    {
+        Guard.Finite(y, nameof(y));
+        return new(Vector3.UnitY, new Vector3(0, y, 0));
+    }
 
     /// <summary>
     /// The walls of an axis-aligned box from <paramref name="min"/> to <paramref name="max"/>, facing inward.

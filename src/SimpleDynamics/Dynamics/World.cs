@@ -13,6 +13,16 @@ namespace SimpleDynamics;
 /// (World.Step.cs). Conventions are those of <see cref="RigidBody"/> (SI units, static = infinite mass) and
 /// <see cref="Contact"/> (normal from B to A).
 /// </summary>
+/// <remarks>
+/// <para><b>Mutation rule.</b> Bodies and planes may be added and removed between steps, never during one:
+/// <see cref="Add"/>, <see cref="Remove"/>, <see cref="AddPlane"/>, <see cref="AddPlanes"/>,
+/// <see cref="TrimExcess"/> and the <see cref="Substeps"/>, <see cref="Responder"/> and <see cref="Detector"/>
+/// setters throw <see cref="InvalidOperationException"/> while <see cref="Step"/> runs (from a responder, say).
+/// An enumerator of <see cref="Bodies"/> throws <see cref="InvalidOperationException"/> once a body has been
+/// added or removed, as <see cref="List{T}"/>'s does: to remove bodies while looking at them, loop over a copy
+/// or backwards by index. A removed body is gone from <see cref="Collisions"/> too: no contact names a body
+/// that is not in the world.</para>
+/// </remarks>
 public sealed partial class World
 {
     private RigidBody[] _bodies = new RigidBody[16];
@@ -22,6 +32,7 @@ public sealed partial class World
     private Vector3 _gravity;
     private int _substeps = 4;
     private bool _stepping;
+    private int _bodiesVersion; // changed by every Add and Remove, so that enumerators of Bodies notice
     private float _contactMargin = 0.01f;
     private ICollisionResponder _responder;
     private ICollisionDetector _detector;
@@ -35,12 +46,15 @@ public sealed partial class World
         _responder = new SequentialImpulseSolver();
         _detector = new SpatialHashDetector();
         Bodies = new BodyList(this);
+        Collisions = new CollisionData { Owner = this };
     }
 
-    /// <summary>Creates a world with the given gravity and responder.</summary>
+    /// <summary>Creates a world with the given gravity (m/s²) and responder (the default solver when null).</summary>
+    /// <exception cref="ArgumentException"><paramref name="gravity"/> is not finite.</exception>
     public World(Vector3 gravity, ICollisionResponder? responder = null)
         : this()
     {
+        Guard.Finite(gravity, nameof(gravity));
         Gravity = gravity;
         if (responder is not null)
         {
@@ -76,6 +90,7 @@ public sealed partial class World
         set
         {
             Guard.AtLeast(value, 1, nameof(Substeps));
+            ThrowIfStepping(nameof(Substeps));
             _substeps = value;
         }
     }
@@ -104,6 +119,7 @@ public sealed partial class World
         set
         {
             Guard.NotNull(value, nameof(Responder));
+            ThrowIfStepping(nameof(Responder));
             _responder = value;
         }
     }
@@ -115,14 +131,20 @@ public sealed partial class World
         set
         {
             Guard.NotNull(value, nameof(Detector));
+            ThrowIfStepping(nameof(Detector));
             _detector = value;
         }
     }
 
-    /// <summary>The contacts of the last step, measured at the end of it.</summary>
-    public CollisionData Collisions { get; } = new();
+    /// <summary>
+    /// The contacts of the last step, measured at the end of it, less those naming a body removed since.
+    /// </summary>
+    public CollisionData Collisions { get; }
 
-    /// <summary>The bodies, in insertion order (a removal moves the last body into the gap).</summary>
+    /// <summary>
+    /// The bodies, in insertion order (a removal moves the last body into the gap). Its enumerators throw
+    /// <see cref="InvalidOperationException"/> once a body has been added or removed.
+    /// </summary>
     public IReadOnlyList<RigidBody> Bodies { get; }
 
     /// <summary>The static planes.</summary>
@@ -136,6 +158,7 @@ public sealed partial class World
     /// <summary>Adds a body and returns it.</summary>
     /// <exception cref="ArgumentNullException"><paramref name="body"/> is null.</exception>
     /// <exception cref="ArgumentException">The body already belongs to a world.</exception>
+    /// <exception cref="InvalidOperationException">Called during <see cref="Step"/>.</exception>
     public RigidBody Add(RigidBody body)
     {
         Guard.NotNull(body, nameof(body));
@@ -144,21 +167,25 @@ public sealed partial class World
             throw new ArgumentException("The body already belongs to a world.", nameof(body));
         }
 
-        if (_bodyCount == _bodies.Length)
-        {
-            Array.Resize(ref _bodies, _bodies.Length * 2);
-        }
-
+        ThrowIfStepping(nameof(Add));
+        Buffers.EnsureCapacity(ref _bodies, _bodyCount + 1);
         body.index = _bodyCount;
         body.World = this;
         _bodies[_bodyCount++] = body;
+        _bodiesVersion++;
         return body;
     }
 
-    /// <summary>Removes a body; returns false if it was not in this world.</summary>
+    /// <summary>
+    /// Removes a body, and with it every contact in <see cref="Collisions"/> that names it; returns false if it
+    /// was not in this world. The last body moves into its slot.
+    /// </summary>
+    /// <exception cref="ArgumentNullException"><paramref name="body"/> is null.</exception>
+    /// <exception cref="InvalidOperationException">Called during <see cref="Step"/>.</exception>
     public bool Remove(RigidBody body)
     {
         Guard.NotNull(body, nameof(body));
+        ThrowIfStepping(nameof(Remove));
         if (body.World != this)
         {
             return false;
@@ -171,32 +198,84 @@ public sealed partial class World
         _bodies[_bodyCount] = null!;
         body.index = -1;
         body.World = null;
+        _bodiesVersion++;
+        // The contacts are dropped when Collisions is next read: one pass for however many removals.
+        Collisions.MarkBodiesRemoved();
         return true;
     }
 
     /// <summary>Adds a static plane (ground or wall).</summary>
+    /// <exception cref="ArgumentException">The plane is uninitialised (<c>default</c>).</exception>
+    /// <exception cref="InvalidOperationException">Called during <see cref="Step"/>.</exception>
     public void AddPlane(StaticPlane plane)
     {
-        if (plane.Normal == Vector3.Zero)
-        {
-            throw new ArgumentException("The plane is uninitialised; create it with a unit normal.", nameof(plane));
-        }
-
-        if (_planeCount == _planes.Length)
-        {
-            Array.Resize(ref _planes, _planes.Length * 2);
-        }
-
+        ValidatePlane(plane, nameof(plane));
+        ThrowIfStepping(nameof(AddPlane));
+        Buffers.EnsureCapacity(ref _planes, _planeCount + 1);
         _planes[_planeCount++] = plane;
     }
 
-    /// <summary>Adds several static planes, e.g. the walls of <see cref="StaticPlane.Box"/>.</summary>
+    /// <summary>
+    /// Adds several static planes, e.g. the walls of <see cref="StaticPlane.Box"/>: all of them, or, if one is
+    /// invalid, none.
+    /// </summary>
+    /// <exception cref="ArgumentNullException"><paramref name="planes"/> is null.</exception>
+    /// <exception cref="ArgumentException">A plane is uninitialised (<c>default</c>); none is added.</exception>
+    /// <exception cref="InvalidOperationException">Called during <see cref="Step"/>.</exception>
     public void AddPlanes(IEnumerable<StaticPlane> planes)
     {
         Guard.NotNull(planes, nameof(planes));
-        foreach (StaticPlane plane in planes)
+        ThrowIfStepping(nameof(AddPlanes));
+        // Read the sequence once (it may be lazy or single-use), check every plane, then add them all.
+        var list = new List<StaticPlane>(planes);
+        foreach (StaticPlane plane in list)
         {
-            AddPlane(plane);
+            ValidatePlane(plane, nameof(planes));
+        }
+
+        Buffers.EnsureCapacity(ref _planes, _planeCount + list.Count);
+        list.CopyTo(_planes, _planeCount);
+        _planeCount += list.Count;
+    }
+
+    /// <summary>
+    /// Releases the spare room of the world's working arrays (bodies, planes, <see cref="Collisions"/>, and the
+    /// responder's and detector's buffers), which grow to the largest scene seen and otherwise never shrink:
+    /// call it after removing many bodies, not every step (it allocates the smaller arrays).
+    /// </summary>
+    /// <exception cref="InvalidOperationException">Called during <see cref="Step"/>.</exception>
+    public void TrimExcess()
+    {
+        ThrowIfStepping(nameof(TrimExcess));
+        Buffers.Shrink(ref _bodies, _bodyCount);
+        Buffers.Shrink(ref _planes, _planeCount);
+        Collisions.TrimExcess();
+        TrimStageBuffers();
+    }
+
+    /// <summary>Trims the buffers the step's stages keep (responder, detector); implemented beside them.</summary>
+    partial void TrimStageBuffers();
+
+    /// <summary>Room in the body array, for tests of <see cref="TrimExcess"/>.</summary>
+    internal int BodyCapacity => _bodies.Length;
+
+    /// <summary>Room in the plane array, for tests of <see cref="TrimExcess"/>.</summary>
+    internal int PlaneCapacity => _planes.Length;
+
+    private static void ValidatePlane(in StaticPlane plane, string paramName)
+    {
+        if (plane.Normal == Vector3.Zero)
+        {
+            throw new ArgumentException("The plane is uninitialised; create it with a unit normal.", paramName);
+        }
+    }
+
+    private void ThrowIfStepping(string member)
+    {
+        if (_stepping)
+        {
+            throw new InvalidOperationException(
+                $"World.{member} cannot be used while the world is stepping (from a responder or detector); change the world between steps.");
         }
     }
 
@@ -211,14 +290,62 @@ public sealed partial class World
         public RigidBody this[int index] =>
             (uint)index < (uint)_world._bodyCount ? _world._bodies[index] : throw new ArgumentOutOfRangeException(nameof(index));
 
-        public IEnumerator<RigidBody> GetEnumerator()
-        {
-            for (int i = 0; i < _world._bodyCount; i++)
-            {
-                yield return _world._bodies[i];
-            }
-        }
+        public IEnumerator<RigidBody> GetEnumerator() => new Enumerator(_world);
 
         IEnumerator IEnumerable.GetEnumerator() => GetEnumerator();
     }
+
+    /// <summary>
+    /// Walks the body array, and throws once a body has been added or removed since it began: checked on every
+    /// move, after the last item too, as <see cref="List{T}"/>'s enumerator does.
+    /// </summary>
+    private sealed class Enumerator : IEnumerator<RigidBody>
+    {
+        private readonly World _world;
+        private readonly int _version;
+        private int _next;
+
+        public Enumerator(World world)
+        {
+            _world = world;
+            _version = world._bodiesVersion;
+        }
+
+        public RigidBody Current { get; private set; } = null!;
+
+        object IEnumerator.Current => Current;
+
+        public bool MoveNext()
+        {
+            if (_version != _world._bodiesVersion)
+            {
+                throw new InvalidOperationException("The world's bodies changed (Add or Remove) while they were being enumerated.");
+            }
+
+            if (_next < _world._bodyCount)
+            {
+                Current = _world._bodies[_next++];
+                return true;
+            }
+
+            Current = null!;
+            return false;
+        }
+
+        public void Reset()
+        {
+            if (_version != _world._bodiesVersion)
+            {
+                throw new InvalidOperationException("The world's bodies changed (Add or Remove) while they were being enumerated.");
+            }
+
+            _next = 0;
+            Current = null!;
+        }
+
+        public void Dispose()
+        {
+        }
+    }
+
 }

@@ -61,21 +61,73 @@ public readonly struct Matrix3 : IEquatable<Matrix3>
     public float Determinant() =>
         M11 * (M22 * M33 - M23 * M32) - M12 * (M21 * M33 - M23 * M31) + M13 * (M21 * M32 - M22 * M31);
 
-    /// <summary>The inverse, by the adjugate; throws when the matrix is singular.</summary>
-    /// <exception cref="InvalidOperationException">The determinant is zero or not finite.</exception>
+    /// <summary>The inverse; throws when the matrix has no inverse that is finite in float.</summary>
+    /// <remarks>See <see cref="TryInvert"/> for how it avoids underflow and overflow.</remarks>
+    /// <exception cref="InvalidOperationException">The matrix is singular, not finite, or its inverse is not finite in float.</exception>
     public Matrix3 Inverse()
     {
-        float det = Determinant();
-        if (det == 0 || !float.IsFinite(det))
+        if (!TryInvert(out Matrix3 inverse))
         {
-            throw new InvalidOperationException("The matrix is singular and has no inverse.");
+            throw new InvalidOperationException("The matrix is singular or its inverse is not finite in float.");
         }
 
-        float s = 1f / det;
-        return new Matrix3(
-            (M22 * M33 - M23 * M32) * s, (M13 * M32 - M12 * M33) * s, (M12 * M23 - M13 * M22) * s,
-            (M23 * M31 - M21 * M33) * s, (M11 * M33 - M13 * M31) * s, (M13 * M21 - M11 * M23) * s,
-            (M21 * M32 - M22 * M31) * s, (M12 * M31 - M11 * M32) * s, (M11 * M22 - M12 * M21) * s);
+        return inverse;
+    }
+
+    /// <summary>
+    /// The inverse, if the matrix has one whose entries are all finite floats; otherwise false and
+    /// <see cref="Zero"/>.
+    /// </summary>
+    /// <remarks>
+    /// Inertia tensors span many decades (a 1 µg, 0.1 mm bead has I ≈ 4·10⁻¹⁵ kg·m²; a 1,000 t, 10 km sphere
+    /// 4·10¹³), so the determinant, a product of three entries, underflows or overflows float long before the
+    /// inverse itself does. A diagonal matrix is therefore inverted entry by entry (exact to rounding); any
+    /// other is scaled by its largest entry, inverted by the adjugate in double (whose exponent range holds any
+    /// product of three such entries), and scaled back: (sA)⁻¹ = A⁻¹ / s.
+    /// </remarks>
+    internal bool TryInvert(out Matrix3 inverse)
+    {
+        inverse = Zero;
+        if (!IsFinite())
+        {
+            return false;
+        }
+
+        Matrix3 result;
+        if (M12 == 0 && M13 == 0 && M21 == 0 && M23 == 0 && M31 == 0 && M32 == 0)
+        {
+            result = Diagonal(1f / M11, 1f / M22, 1f / M33);
+        }
+        else
+        {
+            double s = MathF.Max(
+                MathF.Max(MathF.Max(MathF.Abs(M11), MathF.Abs(M12)), MathF.Max(MathF.Abs(M13), MathF.Abs(M21))),
+                MathF.Max(MathF.Max(MathF.Abs(M22), MathF.Abs(M23)), MathF.Max(MathF.Max(MathF.Abs(M31), MathF.Abs(M32)), MathF.Abs(M33))));
+            double a11 = M11 / s, a12 = M12 / s, a13 = M13 / s;
+            double a21 = M21 / s, a22 = M22 / s, a23 = M23 / s;
+            double a31 = M31 / s, a32 = M32 / s, a33 = M33 / s;
+            double c11 = a22 * a33 - a23 * a32, c12 = a13 * a32 - a12 * a33, c13 = a12 * a23 - a13 * a22;
+            double det = a11 * c11 + a21 * c12 + a31 * c13;
+            if (det == 0 || !double.IsFinite(det))
+            {
+                return false;
+            }
+
+            // A⁻¹ = adj(A/s) / (det(A/s) · s).
+            double k = 1.0 / (det * s);
+            result = new Matrix3(
+                (float)(c11 * k), (float)(c12 * k), (float)(c13 * k),
+                (float)((a23 * a31 - a21 * a33) * k), (float)((a11 * a33 - a13 * a31) * k), (float)((a13 * a21 - a11 * a23) * k),
+                (float)((a21 * a32 - a22 * a31) * k), (float)((a12 * a31 - a11 * a32) * k), (float)((a11 * a22 - a12 * a21) * k));
+        }
+
+        if (!result.IsFinite())
+        {
+            return false;
+        }
+
+        inverse = result;
+        return true;
     }
 
     /// <summary>

@@ -14,12 +14,51 @@ public static class Vectors
         float.IsFinite(q.X) && float.IsFinite(q.Y) && float.IsFinite(q.Z) && float.IsFinite(q.W);
 
     /// <summary>
+    /// The unit quaternion along <paramref name="q"/>, or false when q is zero or not finite. The largest
+    /// component is divided out first, so that the squared length can neither overflow (a component of 2·10¹⁹
+    /// squares past float's 3.4·10³⁸) nor underflow to zero.
+    /// </summary>
+    internal static bool TryNormalize(Quaternion q, out Quaternion unit)
+    {
+        unit = default;
+        if (!IsFinite(q))
+        {
+            return false;
+        }
+
+        float lengthSquared = q.LengthSquared();
+        if (lengthSquared > 1e-30f && lengthSquared < 1e30f)
+        {
+            unit = Quaternion.Normalize(q); // the usual case: no scaling needed, same bits as System.Numerics
+            return true;
+        }
+
+        float largest = MathF.Max(MathF.Max(MathF.Abs(q.X), MathF.Abs(q.Y)), MathF.Max(MathF.Abs(q.Z), MathF.Abs(q.W)));
+        if (largest == 0)
+        {
+            return false;
+        }
+
+        unit = Quaternion.Normalize(new Quaternion(q.X / largest, q.Y / largest, q.Z / largest, q.W / largest));
+        return true;
+    }
+
+    /// <summary>
     /// Two unit tangents <paramref name="t1"/>, <paramref name="t2"/> that make (n, t1, t2) a right-handed
     /// orthonormal basis. When n lies in the xy-plane, t1 lies in it too and t2 is ±z exactly, so a planar
     /// (z = 0) simulation never leaves its plane through friction.
     /// </summary>
+    /// <param name="n">A unit normal.</param>
+    /// <param name="t1">The first tangent.</param>
+    /// <param name="t2">The second tangent, n × t1.</param>
+    /// <exception cref="ArgumentException"><paramref name="n"/> is zero or not finite; it has no tangents.</exception>
     public static void Tangents(Vector3 n, out Vector3 t1, out Vector3 t2)
     {
+        if (!IsFinite(n) || n == Vector3.Zero)
+        {
+            throw new ArgumentException($"n must be a finite, non-zero (unit) vector, but was {n}.", nameof(n));
+        }
+
         // Cross with whichever axis is least parallel to n; z first so that planar normals keep t1 planar.
         Vector3 axis = MathF.Abs(n.Z) < 0.9f ? Vector3.UnitZ : Vector3.UnitX;
         t1 = Vector3.Normalize(Vector3.Cross(n, axis));
