@@ -21,7 +21,7 @@ namespace SimpleDynamics.Bodies;
 /// <para>Every setter validates its value and throws an <see cref="ArgumentException"/> naming the property,
 /// leaving the body unchanged.</para>
 /// </remarks>
-public sealed class RigidBody
+public sealed partial class RigidBody
 {
     private static int s_nextId;
 
