@@ -9,6 +9,11 @@ public sealed partial class RigidBody
     internal CollisionFilter filter = CollisionFilter.Default;
     internal bool isSensor;
 
+    // Where this body's touching contacts start in the world's event store, valid while touchStamp equals the
+    // store's stamp (see World.ContactsOf); a stale stamp means the body touches nothing.
+    internal long touchStamp;
+    internal int firstTouch;
+
     /// <summary>
     /// Anything the game wants to find from the body (its game object, a score, a sound); the physics never
     /// reads it.
@@ -28,7 +33,8 @@ public sealed partial class RigidBody
 
     /// <summary>
     /// A sensor (a trigger area) takes and gives no impulses: nothing collides with it and none of its pairs is
-    /// in <see cref="World.Collisions"/>.
+    /// in <see cref="World.Collisions"/>. Instead the world reports which bodies overlap it, as
+    /// <see cref="ContactEvents.SensorBegin"/> and <see cref="ContactEvents.SensorEnd"/> events.
     /// </summary>
     /// <remarks>
     /// A sensor moves as its type says: a static sensor stays put, a kinematic one moves with its velocity, and

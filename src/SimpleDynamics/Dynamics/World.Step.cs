@@ -50,6 +50,7 @@ public sealed partial class World
         Substep = 0;
         _stepping = false;
         ClearForces();
+        ReportContactEvents();
         Time += dt;
     }
 

@@ -139,6 +139,11 @@ public class FilteringTests
                             $"step {step}: masked pair {c.BodyA} [{c.BodyA.Filter}] / {c.BodyB} [{c.BodyB.Filter}]");
                     }
                 }
+
+                foreach (HitEvent hit in world.ContactEvents.Hits)
+                {
+                    Law.Holds(hit.IsPlaneContact || CollisionFilter.ShouldCollide(hit.BodyA.Filter, hit.BodyB!.Filter), $"a hit names a masked pair: {hit}");
+                }
             }
         }, seed: 1101, maxTest: 60);
         Assert.True(contacts > 1000, $"only {contacts} contacts in all: the scenes test too little");
