@@ -21,8 +21,8 @@ public sealed partial class World
     /// Queries find bodies through a grid built on the first query after each step and reused until the next
     /// step. A body moved by hand (<see cref="RigidBody.Position"/>, <see cref="RigidBody.Radius"/>) between
     /// steps is tested where it is, but found through the cells of where it was: call this after moving bodies
-    /// and before querying. A change in the number of bodies is noticed without it, and removed bodies are
-    /// never reported.
+    /// and before querying. Removed bodies are never reported, and a change in the number of bodies rebuilds
+    /// the grid without it; adding one body while removing another (the same count) needs it too.
     /// </remarks>
     public void RefreshQueries() => _queryVersion++;
 

@@ -1,6 +1,7 @@
 using System;
 using System.Linq;
 using System.Numerics;
+using FsCheck.Fluent;
 using SimpleDynamics.Bodies;
 using SimpleDynamics.Collision;
 using SimpleDynamics.Tests.Properties;
@@ -52,6 +53,44 @@ public class FilteringTests
 
         Assert.Equal(new Vector3(2, 0, 0), left.LinearVelocity);
         Assert.True(left.Position.X > 1.9f && right.Position.X < -1.9f, $"they should have swapped sides: {left.Position}, {right.Position}");
+    }
+
+    /// <summary>Two balls sent at each other pass through exactly when their generated filters reject the pair.</summary>
+    [Fact]
+    public void Balls_pass_through_each_other_exactly_when_the_filters_say_so()
+    {
+        int passed = 0, bounced = 0;
+        PropertyCheck.Run(
+            from a in GameGenerators.Filter
+            from b in GameGenerators.Filter
+            from speed in Generators.UniformF(0.5, 20)
+            from offset in Generators.UniformF(-0.9, 0.9)
+            select (a, b, speed, offset),
+            x =>
+            {
+                var world = new World(Vector3.Zero);
+                var left = world.Add(new RigidBody(1, 0.5f, new Vector3(-3, 0, 0)) { LinearVelocity = new Vector3(x.speed, 0, 0), Filter = x.a });
+                var right = world.Add(new RigidBody(1, 0.5f, new Vector3(3, x.offset, 0)) { LinearVelocity = new Vector3(-x.speed, 0, 0), Filter = x.b });
+                int steps = (int)(6 / x.speed * 60) + 30;
+                for (int i = 0; i < steps; i++)
+                {
+                    world.Step(1f / 60f);
+                }
+
+                bool collide = CollisionFilter.ShouldCollide(x.a, x.b);
+                bool pushed = left.LinearVelocity != new Vector3(x.speed, 0, 0) || right.LinearVelocity != new Vector3(-x.speed, 0, 0);
+                Law.Holds(pushed == collide, $"filters [{x.a}] and [{x.b}] {(collide ? "should" : "should not")} collide; velocities {left.LinearVelocity}, {right.LinearVelocity}");
+                Law.Holds(collide || (left.Position.X > 2.9f && right.Position.X < -2.9f), $"filtered balls should pass through: {left.Position}, {right.Position}");
+                if (!pushed)
+                {
+                    passed++;
+                }
+                else
+                {
+                    bounced++;
+                }
+            }, seed: 1107, maxTest: 200);
+        Assert.True(passed > 20 && bounced > 20, $"{passed} passed through, {bounced} bounced: the generator should give both");
     }
 
     [Fact]
