@@ -68,13 +68,13 @@ public sealed partial class World
     /// <remarks>
     /// The contacts are copies of those in <see cref="Collisions"/>; the body may be either
     /// <see cref="Contact.BodyA"/> or <see cref="Contact.BodyB"/>, and the normal points from B to A, so flip
-    /// it when the body is B. A body added since the last step has none.
+    /// it when the body is B. A body added since the last step, or not in this world, has none.
     /// </remarks>
     /// <exception cref="ArgumentNullException"><paramref name="body"/> is null.</exception>
     public int ContactsOf(RigidBody body, Span<Contact> contacts)
     {
         Guard.NotNull(body, nameof(body));
-        if (_touchStamp == 0 || body.touchStamp != _touchStamp)
+        if (body.World != this || _touchStamp == 0 || body.touchStamp != _touchStamp)
         {
             return 0;
         }

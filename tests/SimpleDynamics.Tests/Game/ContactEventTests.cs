@@ -114,6 +114,8 @@ public class ContactEventTests
         Assert.Equal(2, world.ContactsOf(bottom, one)); // the count, though only one fits
         Assert.Equal(0, world.ContactsOf(new RigidBody(1, 1, Vector3.Zero), buffer));
         Assert.Throws<ArgumentNullException>("body", () => world.ContactsOf(null!, Span<Contact>.Empty));
+        world.Remove(top);
+        Assert.Equal(0, world.ContactsOf(top, buffer)); // removed: no contacts now, though the last step had one
     }
 
     [Fact]
