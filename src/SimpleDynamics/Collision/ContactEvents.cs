@@ -14,7 +14,8 @@ namespace SimpleDynamics.Collision;
 /// <see cref="World.ContactMargin"/>) do not touch. <see cref="BeginTouch"/> lists the pairs that touch now and
 /// did not after the previous step, <see cref="EndTouch"/> those that did and do not now (also when a body
 /// was removed). So over any run, every end follows its begin, and the begins so far minus the ends so far
-/// equal <see cref="Touching"/>.Length. Events come in the order of <see cref="World.Collisions"/>.
+/// equal <see cref="Touching"/>.Length. Begins, hits and <see cref="Touching"/> come in the order of
+/// <see cref="World.Collisions"/>, ends in the order the pairs touched in the step before.
 /// </remarks>
 public sealed class ContactEvents
 {

@@ -8,9 +8,9 @@ namespace SimpleDynamics;
 public sealed partial class World
 {
     /// <summary>
-    /// Optional: asked during detection for each pair of bodies whose <see cref="RigidBody.Filter"/>s let them
-    /// collide (neither a sensor); return false and the pair passes through, as if filtered. Null (the default)
-    /// lets every such pair collide.
+    /// Optional: asked during detection for each pair of bodies close enough to become a contact whose
+    /// <see cref="RigidBody.Filter"/>s let them collide (neither a sensor); return false and the pair passes
+    /// through, as if filtered. Null (the default) lets every such pair collide.
     /// </summary>
     /// <remarks>
     /// It runs inside <see cref="Step"/> for every nearby pair, so keep it quick, make it depend only on the two
@@ -19,9 +19,9 @@ public sealed partial class World
     public Func<RigidBody, RigidBody, bool>? ShouldCollide { get; set; }
 
     /// <summary>
-    /// Optional: asked during detection for each body near a plane whose filters let them collide; the second
-    /// argument is the plane's index in <see cref="Planes"/>. Return false and the body passes through the
-    /// plane. Null (the default) lets every such pair collide.
+    /// Optional: asked during detection for each body close enough to a plane to touch it within the step,
+    /// whose filters let them collide; the second argument is the plane's index in <see cref="Planes"/>.
+    /// Return false and the body passes through the plane. Null (the default) lets every such pair collide.
     /// </summary>
     public Func<RigidBody, int, bool>? ShouldCollideWithPlane { get; set; }
 }
