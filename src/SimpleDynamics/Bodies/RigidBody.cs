@@ -28,7 +28,7 @@ namespace SimpleDynamics.Bodies;
 /// <para>Every method and setter validates its arguments and throws an <see cref="ArgumentException"/> naming
 /// the parameter (a setter names its property), leaving the body unchanged.</para>
 /// </remarks>
-public sealed class RigidBody
+public sealed partial class RigidBody
 {
     private static int s_nextId;
 

@@ -63,6 +63,7 @@ public static class ContactGeometry
             return false;
         }
 
+        if (!PairFilter.Allows(a, b)) return false; // filtered pairs and sensors never become contacts
         float penetration = CirclePenetration(a.position, a.radius, b.position, b.radius, out Vector3 normal);
 
         Vector3 point = a.position - normal * (a.radius - 0.5f * penetration);
@@ -88,6 +89,7 @@ public static class ContactGeometry
             return false;
         }
 
+        if (!PairFilter.Allows(body, plane, planeIndex)) return false; // filtered pairs and sensors never become contacts
         Vector3 point = body.position - plane.Normal * (body.radius - 0.5f * penetration);
         contact = new Contact(body, ground, point, plane.Normal, penetration)
         {

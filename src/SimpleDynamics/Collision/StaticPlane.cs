@@ -44,6 +44,27 @@ public readonly struct StaticPlane
     /// <summary>Friction of the plane's surface, or null for the responder's setting.</summary>
     public float? Friction { get; }
 
+    /// <summary>
+    /// Anything the game wants to find from the plane (e.g. "floor"); the physics never reads it. Set it with an
+    /// initializer or a <c>with</c> expression, so the plane stays immutable:
+    /// <c>new StaticPlane(n, p) { UserData = "floor" }</c>.
+    /// </summary>
+    public object? UserData { get; init; }
+
+    /// <summary>
+    /// Which bodies collide with this plane (default <see cref="CollisionFilter.Default"/>: all). A body the
+    /// filter rejects passes through the plane. Set it like <see cref="UserData"/>.
+    /// </summary>
+    public CollisionFilter Filter
+    {
+        get => _filter ?? CollisionFilter.Default;
+        init => _filter = value;
+    }
+
+    // Null means the default filter: a plane made by the constructor alone (or by Box) stores none, and a
+    // struct field's default cannot be CollisionFilter.Default (category 1, not 0).
+    private readonly CollisionFilter? _filter;
+
     /// <summary>Signed distance of a point from the plane; positive on the free side.</summary>
     /// <exception cref="ArgumentException"><paramref name="point"/> is not finite.</exception>
     public float DistanceTo(Vector3 point)

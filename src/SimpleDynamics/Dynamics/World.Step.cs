@@ -27,7 +27,7 @@ public sealed partial class World
     ///   <see cref="ICollisionResponder.Collide"/>, see below),
     ///   measure the contacts, and the responder's <see cref="ICollisionResponder.SolvePositions"/> (listing 2);</item>
     /// <item>the responder's <see cref="ICollisionResponder.EndStep"/>, then measure the contacts for
-    ///   <see cref="Collisions"/> and clear the forces.</item>
+    ///   <see cref="Collisions"/>, report the contact events (<see cref="ContactEvents"/>) and clear the forces.</item>
     /// </list>
     /// <para><b>Collisions at their time of impact.</b> Within a substep each body's velocity goes uniformly from
     /// where it started to where gravity, forces and resting contacts take it, which is exact for free flight. Two
@@ -74,6 +74,7 @@ public sealed partial class World
 
             Run(step, StepStage.EndStep);
             MeasureContacts();
+            ReportContactEvents();
             ClearForces();
             Time += dt;
         }

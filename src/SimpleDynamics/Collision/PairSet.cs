@@ -1,0 +1,106 @@
+using System;
+
+namespace SimpleDynamics.Collision;
+
+/// <summary>
+/// The pairs touching at the end of one step, keyed by a 64-bit pair key, in the order they were added:
+/// an open-addressing hash set (linear probing) over a dense list. Both arrays are kept and only grow, so a
+/// warm world allocates nothing here; comparing this step's set with last step's yields the begin and end events.
+/// </summary>
+internal sealed class PairSet<T>
+    where T : struct
+{
+    private ulong[] _keys = new ulong[16];
+    private T[] _items = new T[16];
+
+    // _slots[h] is 0 when empty, else (index into _keys/_items) + 1. Kept at most half full, so probes are short.
+    private int[] _slots = new int[32];
+
+    public int Count { get; private set; }
+
+    /// <summary>The items in the order they were added.</summary>
+    public ReadOnlySpan<T> Items => _items.AsSpan(0, Count);
+
+    public ulong KeyAt(int index) => _keys[index];
+
+    /// <summary>Adds the pair unless its key is already present; returns whether it was added.</summary>
+    public bool Add(ulong key, in T item)
+    {
+        if (2 * (Count + 1) > _slots.Length)
+        {
+            Grow();
+        }
+
+        int mask = _slots.Length - 1;
+        for (int h = Home(key, mask); ; h = (h + 1) & mask)
+        {
+            int slot = _slots[h];
+            if (slot == 0)
+            {
+                Buffers.EnsureCapacity(ref _keys, Count + 1);
+                Buffers.EnsureCapacity(ref _items, Count + 1);
+                _keys[Count] = key;
+                _items[Count] = item;
+                _slots[h] = ++Count;
+                return true;
+            }
+
+            if (_keys[slot - 1] == key)
+            {
+                return false;
+            }
+        }
+    }
+
+    public bool Contains(ulong key)
+    {
+        int mask = _slots.Length - 1;
+        for (int h = Home(key, mask); ; h = (h + 1) & mask)
+        {
+            int slot = _slots[h];
+            if (slot == 0)
+            {
+                return false;
+            }
+
+            if (_keys[slot - 1] == key)
+            {
+                return true;
+            }
+        }
+    }
+
+    /// <summary>Empties the set and keeps its storage.</summary>
+    public void Clear()
+    {
+        Array.Clear(_items, 0, Count); // drop body references so removed bodies can be collected
+        Array.Clear(_slots, 0, _slots.Length);
+        Count = 0;
+    }
+
+    /// <summary>The key of a pair of bodies, whichever order they come in.</summary>
+    public static ulong BodyPairKey(int idA, int idB) =>
+        idA < idB ? ((ulong)(uint)idA << 32) | (uint)idB : ((ulong)(uint)idB << 32) | (uint)idA;
+
+    /// <summary>The key of a body and a plane; body ids are positive, so the set high bit keeps it apart from body pairs.</summary>
+    public static ulong PlanePairKey(int bodyId, int planeIndex) => ((ulong)(uint)bodyId << 32) | 0x8000_0000u | (uint)planeIndex;
+
+    // Fibonacci hashing: multiply by 2^64/φ and keep the high bits, which mixes the two ids of a key.
+    private static int Home(ulong key, int mask) => (int)((key * 0x9E3779B97F4A7C15UL) >> 32) & mask;
+
+    private void Grow()
+    {
+        _slots = new int[_slots.Length * 2];
+        int mask = _slots.Length - 1;
+        for (int i = 0; i < Count; i++)
+        {
+            int h = Home(_keys[i], mask);
+            while (_slots[h] != 0)
+            {
+                h = (h + 1) & mask;
+            }
+
+            _slots[h] = i + 1;
+        }
+    }
+}

@@ -1,0 +1,248 @@
+using System;
+using System.Numerics;
+using System.Threading;
+using SimpleDynamics.Bodies;
+using SimpleDynamics.Collision;
+
+namespace SimpleDynamics;
+
+// Contact and sensor events: what began, ended and struck in the last step, and each body's contacts now.
+public sealed partial class World
+{
+    // Each event pass takes a number unique in the process, so a body's touchStamp says which world's pass (and
+    // which step) its firstTouch belongs to, even after it moves to another world.
+    private static long s_lastTouchStamp;
+
+    private readonly ContactEvents _contactEvents = new();
+    private PairSet<ContactEvent> _previousTouch = new();
+    private PairSet<SensorEvent> _previousSensor = new();
+
+    // The touching contacts of the last step, in the order of ContactEvents.Touching; each body's touching
+    // contacts form a linked list through _nextTouch (node 2k for body A of contact k, 2k + 1 for body B).
+    private Contact[] _touchContacts = new Contact[16];
+    private int[] _nextTouch = new int[32];
+    private long _touchStamp;
+
+    private float _touchTolerance = 1e-4f;
+    private float _hitSpeedThreshold = 1f;
+
+    /// <summary>Begin/end touch, hit and sensor events of the last step, and the pairs touching now.</summary>
+    public ContactEvents ContactEvents => _contactEvents;
+
+    /// <summary>
+    /// A pair touches when its contact's <see cref="Contact.Penetration"/> at the end of the step is at least
+    /// −TouchTolerance (m, ≥ 0, default 1e-4), or when the responder pushed it during the step
+    /// (<see cref="Contact.NormalImpulse"/> &gt; 0). A resting pair overlaps slightly and touches; a ball that
+    /// bounces within one step was pushed and touched; a speculative pair, merely close, does not touch.
+    /// </summary>
+    public float TouchTolerance
+    {
+        get => _touchTolerance;
+        set
+        {
+            Guard.NonNegative(value, nameof(TouchTolerance));
+            _touchTolerance = value;
+        }
+    }
+
+    /// <summary>
+    /// The least approach speed (m/s, ≥ 0, default 1) of a contact the responder pushed for it to be reported
+    /// in <see cref="ContactEvents.Hits"/>. A body resting on another approaches at about g·dt (0.16 m/s at
+    /// 60 Hz), so the default reports impacts, not resting.
+    /// </summary>
+    public float HitSpeedThreshold
+    {
+        get => _hitSpeedThreshold;
+        set
+        {
+            Guard.NonNegative(value, nameof(HitSpeedThreshold));
+            _hitSpeedThreshold = value;
+        }
+    }
+
+    /// <summary>
+    /// Copies the contacts <paramref name="body"/> touches at the end of the last step into
+    /// <paramref name="contacts"/> (as many as fit) and returns how many there are, so a caller can pass an
+    /// empty span to count them, or a larger buffer when the count exceeds the one given. Allocates nothing.
+    /// </summary>
+    /// <remarks>
+    /// The contacts are copies of those in <see cref="Collisions"/>; the body may be either
+    /// <see cref="Contact.BodyA"/> or <see cref="Contact.BodyB"/>, and the normal points from B to A, so flip
+    /// it when the body is B. A body added since the last step, or not in this world, has none.
+    /// </remarks>
+    /// <exception cref="ArgumentNullException"><paramref name="body"/> is null.</exception>
+    public int ContactsOf(RigidBody body, Span<Contact> contacts)
+    {
+        Guard.NotNull(body, nameof(body));
+        if (body.World != this || _touchStamp == 0 || body.touchStamp != _touchStamp)
+        {
+            return 0;
+        }
+
+        int count = 0;
+        for (int node = body.firstTouch; node >= 0; node = _nextTouch[node])
+        {
+            if (count < contacts.Length)
+            {
+                contacts[count] = _touchContacts[node >> 1];
+            }
+
+            count++;
+        }
+
+        return count;
+    }
+
+    /// <summary>
+    /// Called once at the end of <see cref="Step"/>: which pairs touch now, compared with last step's set
+    /// (begin and end), which struck (hits), and which bodies overlap sensors.
+    /// </summary>
+    private void ReportContactEvents()
+    {
+        _queryVersion++; // the bodies have moved: the query grid must be rebuilt
+        ContactEvents events = _contactEvents;
+        events.Clear();
+
+        // Last step's set becomes "previous"; the older one is emptied and refilled as this step's.
+        PairSet<ContactEvent> previous = events.Touch;
+        PairSet<ContactEvent> touching = _previousTouch;
+        touching.Clear();
+        events.Touch = touching;
+        _previousTouch = previous;
+
+        foreach (ref readonly Contact contact in Collisions.Contacts)
+        {
+            bool isPlane = contact.IsPlaneContact;
+            RigidBody? bodyB = isPlane ? null : contact.BodyB;
+            int planeIndex = isPlane ? contact.PlaneIndex : -1;
+            if (contact.NormalImpulse > 0 && -contact.ApproachVelocity >= _hitSpeedThreshold)
+            {
+                events.AddHit(new HitEvent(contact, bodyB, planeIndex));
+            }
+
+            // A pair touches if it overlaps at the end of the step, or if the responder pushed it during the
+            // step: a ball that bounces within one step never ends a step overlapping, yet it touched.
+            if (contact.Penetration < -_touchTolerance && !(contact.NormalImpulse > 0))
+            {
+                continue; // speculative: close, never touched
+            }
+
+            ulong key = isPlane
+                ? PairSet<ContactEvent>.PlanePairKey(contact.BodyA.Id, planeIndex)
+                : PairSet<ContactEvent>.BodyPairKey(contact.BodyA.Id, bodyB!.Id);
+            var pair = new ContactEvent(contact.BodyA, bodyB, planeIndex);
+            if (!touching.Add(key, pair))
+            {
+                continue;
+            }
+
+            Buffers.EnsureCapacity(ref _touchContacts, touching.Count);
+            _touchContacts[touching.Count - 1] = contact;
+            if (!previous.Contains(key))
+            {
+                events.AddBegin(pair);
+            }
+        }
+
+        ReadOnlySpan<ContactEvent> before = previous.Items;
+        for (int i = 0; i < before.Length; i++)
+        {
+            if (!touching.Contains(previous.KeyAt(i)))
+            {
+                events.AddEnd(before[i]);
+            }
+        }
+
+        LinkTouchesToBodies(touching);
+        ReportSensorOverlaps(events);
+    }
+
+    /// <summary>Threads each body's touching contacts into a list that <see cref="ContactsOf"/> walks.</summary>
+    private void LinkTouchesToBodies(PairSet<ContactEvent> touching)
+    {
+        // Drop references to bodies of earlier steps so removed bodies can be collected.
+        Array.Clear(_touchContacts, touching.Count, _touchContacts.Length - touching.Count);
+        _touchStamp = Interlocked.Increment(ref s_lastTouchStamp);
+        Buffers.EnsureCapacity(ref _nextTouch, 2 * touching.Count);
+        ReadOnlySpan<ContactEvent> pairs = touching.Items;
+
+        // Backwards, so that each list comes out in the order of the contacts.
+        for (int k = pairs.Length - 1; k >= 0; k--)
+        {
+            Link(pairs[k].BodyA, 2 * k);
+            if (pairs[k].BodyB is RigidBody bodyB)
+            {
+                Link(bodyB, 2 * k + 1);
+            }
+        }
+    }
+
+    private void Link(RigidBody body, int node)
+    {
+        if (body.touchStamp != _touchStamp)
+        {
+            body.touchStamp = _touchStamp;
+            body.firstTouch = -1;
+        }
+
+        _nextTouch[node] = body.firstTouch;
+        body.firstTouch = node;
+    }
+
+    /// <summary>
+    /// Finds, through the query grid, the bodies overlapping each sensor (d &lt; r_sensor + r_body) and reports
+    /// the changes since the last step.
+    /// </summary>
+    private void ReportSensorOverlaps(ContactEvents events)
+    {
+        PairSet<SensorEvent> previous = events.Sensor;
+        PairSet<SensorEvent> overlapping = _previousSensor;
+        overlapping.Clear();
+        events.Sensor = overlapping;
+        _previousSensor = previous;
+
+        QueryGrid? grid = null;
+        foreach (RigidBody sensor in BodySpan)
+        {
+            if (!sensor.isSensor)
+            {
+                continue;
+            }
+
+            grid ??= CurrentQueryGrid();
+            float r = sensor.radius;
+            grid.GatherBox(sensor.position - new Vector3(r), sensor.position + new Vector3(r));
+            foreach (int slot in grid.Candidates)
+            {
+                RigidBody visitor = grid.BodyAt(slot);
+                if (visitor == sensor || visitor.isSensor || visitor.World != this
+                    || !CollisionFilter.ShouldCollide(sensor.filter, visitor.filter))
+                {
+                    continue;
+                }
+
+                float reach = r + visitor.radius;
+                if (Vector3.DistanceSquared(sensor.position, visitor.position) >= reach * reach)
+                {
+                    continue;
+                }
+
+                ulong key = PairSet<SensorEvent>.BodyPairKey(sensor.Id, visitor.Id);
+                var overlap = new SensorEvent(sensor, visitor);
+                if (overlapping.Add(key, overlap) && !previous.Contains(key))
+                {
+                    events.AddSensorBegin(overlap);
+                }
+            }
+        }
+
+        ReadOnlySpan<SensorEvent> before = previous.Items;
+        for (int i = 0; i < before.Length; i++)
+        {
+            if (!overlapping.Contains(previous.KeyAt(i)))
+            {
+                events.AddSensorEnd(before[i]);
+            }
+        }
+    }
+}
