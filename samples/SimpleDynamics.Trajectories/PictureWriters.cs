@@ -138,7 +138,7 @@ public abstract class PictureWriter : TrajectoryWriter
 /// </summary>
 public sealed class SvgTrajectoryWriter : PictureWriter
 {
-    private const int Width = 1070, PanelWidth = 300, PanelHeight = 240, SceneHeight = 330, Left = 50;
+    private const int Width = 1100, PanelWidth = 300, PanelHeight = 240, SceneHeight = 330, Left = 50;
 
     /// <summary>Writes to <paramref name="output"/>.</summary>
     public SvgTrajectoryWriter(TextWriter output)
@@ -149,7 +149,7 @@ public sealed class SvgTrajectoryWriter : PictureWriter
     /// <inheritdoc />
     public override void Complete()
     {
-        int height = Math.Max(1, Recordings.Count) * SceneHeight + 10;
+        int height = Math.Max(1, Recordings.Count) * SceneHeight + 12 * Recordings.Sum(r => r.Warnings.Count) + 10;
         var svg = new StringBuilder();
         svg.Append("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
         svg.Append($"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{Width}\" height=\"{height}\" viewBox=\"0 0 {Width} {height}\" font-family=\"sans-serif\" font-size=\"11\">\n");
@@ -158,17 +158,18 @@ public sealed class SvgTrajectoryWriter : PictureWriter
         for (int s = 0; s < Recordings.Count; s++)
         {
             Recording r = Recordings[s];
-            int top = s * SceneHeight + 10;
+            int top = s * SceneHeight + 12 * Recordings.Take(s).Sum(previous => previous.Warnings.Count) + 10;
             svg.Append($"<g id=\"scene-{E(r.Scene.Name)}\" transform=\"translate(0,{top})\">\n");
             svg.Append($"<text x=\"10\" y=\"14\" font-size=\"13\" font-weight=\"bold\">{E(r.Scene.Name)}: {E(r.Scene.Description)}</text>\n");
-            foreach (string warning in r.Warnings)
+            for (int w = 0; w < r.Warnings.Count; w++)
             {
-                svg.Append($"<text x=\"10\" y=\"{SceneHeight - 4}\" fill=\"#b00000\">warning: {E(warning)}</text>\n");
+                svg.Append($"<text x=\"10\" y=\"{26 + 12 * w}\" fill=\"#b00000\">warning: {E(r.Warnings[w])}</text>\n");
             }
 
-            TimePlot(svg, r, Left, 40);
-            PathPlot(svg, r, Left + PanelWidth + 40, 40);
-            EnergyPlot(svg, r, Left + 2 * (PanelWidth + 40), 40);
+            int panels = 40 + 12 * r.Warnings.Count;
+            TimePlot(svg, r, Left, panels);
+            PathPlot(svg, r, Left + PanelWidth + 60, panels);
+            EnergyPlot(svg, r, Left + 2 * (PanelWidth + 60), panels);
             svg.Append("</g>\n");
         }
 
