@@ -178,6 +178,19 @@ public class TrajectorySampleTests
     }
 
     [Fact]
+    public void Wide_numbers_never_run_into_their_neighbours()
+    {
+        // A frictionless ball sliding at 5 m/s for 3,000 s ends 15 km away: "15000.000" fills its column.
+        var (code, stdout, _) = Run("--scene", "slide", "--friction", "0", "--dt", "0.1", "--steps", "30000", "--every", "10000");
+
+        Assert.Equal(0, code);
+        List<string[]> rows = TableRows(stdout, "slide");
+        Assert.Equal(4, rows.Count);
+        Assert.Equal("15000.000", rows[^1][2]);
+        Assert.All(rows, row => Assert.Equal(15, row.Length)); // time body x y vx vy wz | KE PE E px py contacts max-pen
+    }
+
+    [Fact]
     public void Csv_numbers_have_one_format_seven_significant_digits_at_most()
     {
         var (_, stdout, _) = Run("--scene", "offcentre", "--format", "csv", "--every", "1", "--steps", "30");
