@@ -40,7 +40,7 @@ public sealed class LawOptions
     /// </summary>
     public double MinApproachSpeed { get; set; } = 1;
 
-    /// <summary>The fastest approach (m/s) generated (default 10).</summary>
+    /// <summary>The fastest approach (m/s) generated (default 10). Speeds are multiples of 0.01 m/s.</summary>
     public double MaxApproachSpeed { get; set; } = 10;
 
     /// <summary>The time step (s) of the one <see cref="World.Step"/> per collision (default 1/60).</summary>
@@ -63,10 +63,12 @@ public sealed class LawOptions
             throw new ArgumentOutOfRangeException(nameof(Tolerance), Tolerance, "A relative tolerance in (0, 1).");
         }
 
-        if (!(MinApproachSpeed > 0 && MaxApproachSpeed >= MinApproachSpeed && MaxApproachSpeed <= 1000))
+        // Generated numbers lie on a grid of 0.01, so the range must hold at least one grid point.
+        if (!(MinApproachSpeed >= 0.01 && MaxApproachSpeed >= MinApproachSpeed && MaxApproachSpeed <= 1000
+            && Math.Floor(MaxApproachSpeed * 100 + 1e-9) >= Math.Ceiling(MinApproachSpeed * 100 - 1e-9)))
         {
             throw new ArgumentOutOfRangeException(nameof(MinApproachSpeed), MinApproachSpeed,
-                "Approach speeds need 0 < MinApproachSpeed <= MaxApproachSpeed <= 1000 m/s.");
+                "Approach speeds need 0.01 <= MinApproachSpeed <= MaxApproachSpeed <= 1000 m/s, with a multiple of 0.01 m/s between them.");
         }
 
         if (!(TimeStep > 0 && TimeStep <= 1))

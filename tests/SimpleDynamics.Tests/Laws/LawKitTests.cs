@@ -103,5 +103,7 @@ public class LawKitTests
 
         Assert.Equal("MaxTest", error.ParamName);
         Assert.Throws<ArgumentException>(() => ResponderLaws.Check(e => new ImpulseCollisionResponder(e), new LawOptions { Laws = ResponderLaw.None }));
+        Assert.Equal("MinApproachSpeed", Assert.Throws<ArgumentOutOfRangeException>(() =>
+            ResponderLaws.Check(e => new ImpulseCollisionResponder(e), new LawOptions { MinApproachSpeed = 0.001, MaxApproachSpeed = 0.005 })).ParamName);
     }
 }
