@@ -1,6 +1,10 @@
 using System;
 using System.Collections.Generic;
+using System.CommandLine;
+using System.CommandLine.Parsing;
 using System.Globalization;
+using System.Linq;
+using System.Numerics;
 
 namespace SimpleDynamics.Trajectories;
 
@@ -50,318 +54,249 @@ public enum OutputFormat
 
     /// <summary>Comma-separated values, one row per body per printed step.</summary>
     Csv,
+
+    /// <summary>A standalone SVG picture: position over time, the path in the plane, energy over time.</summary>
+    Svg,
+
+    /// <summary>A self-contained HTML page that replays the run on a canvas.</summary>
+    Html,
+}
+
+/// <summary>The settings of one run. Settings left unset (null) take the scene's own default.</summary>
+public sealed class Options
+{
+    /// <summary>The largest --steps: ten million steps (a day of simulated time at 0.01 s is 8.6 million).</summary>
+    public const int MaxSteps = 10_000_000;
+
+    /// <summary>The largest --dt (s): a ball falls 5 cm in one such step; larger steps tunnel through contacts.</summary>
+    public const double MaxDt = 0.1;
+
+    /// <summary>The largest --friction: μ of rubber on dry concrete is about 1; 10 is far beyond any surface.</summary>
+    public const double MaxFriction = 10;
+
+    /// <summary>Which scene to run.</summary>
+    public SceneKind Scene { get; set; } = SceneKind.Default;
+
+    /// <summary>Which responder answers the contacts.</summary>
+    public ResponderKind Responder { get; set; } = ResponderKind.Solver;
+
+    /// <summary>ε ∈ [0, 1], or null for the scene's default.</summary>
+    public float? Restitution { get; set; }
+
+    /// <summary>μ ∈ [0, <see cref="MaxFriction"/>], or null for the scene's default.</summary>
+    public float? Friction { get; set; }
+
+    /// <summary>Steps to run, 1 to <see cref="MaxSteps"/>, or null for the scene's default.</summary>
+    public int? Steps { get; set; }
+
+    /// <summary>Time step in seconds, in (0, <see cref="MaxDt"/>], or null for the default.</summary>
+    public float? Dt { get; set; }
+
+    /// <summary>Print every K-th step (≥ 1), or null for about 50 rows (1,000 frames for pictures).</summary>
+    public int? Every { get; set; }
+
+    /// <summary>Table, CSV, SVG or HTML.</summary>
+    public OutputFormat Format { get; set; } = OutputFormat.Table;
+
+    /// <summary>The file to write to, or null for standard output.</summary>
+    public string? OutputPath { get; set; }
 }
 
 /// <summary>
-/// The command line, parsed by hand. Settings left unset (null) take the scene's own default.
+/// The command line on System.CommandLine: the options with their help text and validation. Every number is
+/// parsed invariantly ('.' decimal separator) and checked against its range, and a bad value is reported with
+/// the true reason (not a number, not a whole number, too small, too large).
 /// </summary>
-public sealed class Options
+public sealed class CommandLine
 {
-    /// <summary>The usage text printed by <c>--help</c>.</summary>
-    public const string Usage =
-        """
-        Usage: SimpleDynamics.Trajectories [options]
-
-        Runs a scene of the SimpleDynamics library and prints its trajectory: time, and per body
-        position (m), velocity (m/s) and angular velocity (rad/s), with the world's diagnostics
-        (kinetic, potential and mechanical energy in J, linear momentum in kg m/s, contact count,
-        largest penetration in m). Many-body scenes print a summary of all bodies instead.
-
-        Options:
-          --scene NAME        default | bounce | offcentre | pile | row | slide   (default: default)
-                                default    bounce, then offcentre
-                                bounce     a ball dropped on the ground, eps = 0.8
-                                offcentre  two discs meeting off-centre; friction makes them spin
-                                pile       a pile of balls settling in a closed box (summary only)
-                                row        a row of touching balls struck at one end
-                                slide      a ball sliding on rough ground that starts to roll
-          --responder NAME    solver | impulse | inelastic | projection           (default: solver)
-                                solver      SequentialImpulseSolver (all contacts together)
-                                impulse     ImpulseCollisionResponder (tutorial eq. 5-16)
-                                inelastic   PerfectlyInelasticResponder (tutorial eq. 2)
-                                projection  ProjectionResponder (tutorial listing 2)
-          --restitution EPS   coefficient of restitution, 0..1 (default: per scene)
-          --friction MU       Coulomb friction coefficient, >= 0 (default: per scene)
-          --steps N           number of steps, >= 1 (default: per scene)
-          --dt SECONDS        time step, > 0 (default: 0.01)
-          --every K           print every K-th step, >= 1 (default: about 50 rows per scene)
-          --format FORMAT     table | csv (default: table)
-          --output FILE       write to FILE instead of standard output
-          --help              print this text and exit
-
-        Options take their value as the next argument or after '=' (--steps=200). Numbers use '.'
-        as the decimal separator. In CSV, each row is one body at one printed step; the pile scene
-        writes one row per step for its centre of mass ("com": mean position, velocity of the centre
-        of mass, mean angular velocity).
-
-        Exit codes: 0 success, 1 the output file could not be written, 2 invalid options.
-        """;
-
-    private static readonly Dictionary<string, SceneKind> s_scenes = new(StringComparer.Ordinal)
+    private static readonly (string Name, SceneKind Kind, string Help)[] s_scenes =
     {
-        ["default"] = SceneKind.Default,
-        ["bounce"] = SceneKind.Bounce,
-        ["offcentre"] = SceneKind.OffCentre,
-        ["pile"] = SceneKind.Pile,
-        ["row"] = SceneKind.Row,
-        ["slide"] = SceneKind.Slide,
+        ("default", SceneKind.Default, "bounce, then offcentre"),
+        ("bounce", SceneKind.Bounce, "a ball dropped on the ground, eps = 0.8"),
+        ("offcentre", SceneKind.OffCentre, "two discs meeting off-centre; friction makes them spin"),
+        ("pile", SceneKind.Pile, "100 discs settling in a closed box (table: a summary row per step)"),
+        ("row", SceneKind.Row, "a row of touching balls struck at one end"),
+        ("slide", SceneKind.Slide, "a ball sliding on rough ground that starts to roll"),
     };
 
-    private static readonly Dictionary<string, ResponderKind> s_responders = new(StringComparer.Ordinal)
+    private static readonly (string Name, ResponderKind Kind, string Help)[] s_responders =
     {
-        ["solver"] = ResponderKind.Solver,
-        ["impulse"] = ResponderKind.Impulse,
-        ["inelastic"] = ResponderKind.Inelastic,
-        ["projection"] = ResponderKind.Projection,
+        ("solver", ResponderKind.Solver, "SequentialImpulseSolver (all contacts together)"),
+        ("impulse", ResponderKind.Impulse, "ImpulseCollisionResponder (tutorial eq. 5-16)"),
+        ("inelastic", ResponderKind.Inelastic, "PerfectlyInelasticResponder (tutorial eq. 2)"),
+        ("projection", ResponderKind.Projection, "ProjectionResponder (tutorial listing 2)"),
     };
 
-    private static readonly Dictionary<string, OutputFormat> s_formats = new(StringComparer.Ordinal)
+    private static readonly (string Name, OutputFormat Kind, string Help)[] s_formats =
     {
-        ["table"] = OutputFormat.Table,
-        ["csv"] = OutputFormat.Csv,
+        ("table", OutputFormat.Table, "aligned columns"),
+        ("csv", OutputFormat.Csv, "one row per body per printed step"),
+        ("svg", OutputFormat.Svg, "a picture: position over time, path in the plane, energy"),
+        ("html", OutputFormat.Html, "a page that replays the run on a canvas"),
     };
 
-    /// <summary>Which scene to run.</summary>
-    public SceneKind Scene { get; private set; } = SceneKind.Default;
-
-    /// <summary>Which responder answers the contacts.</summary>
-    public ResponderKind Responder { get; private set; } = ResponderKind.Solver;
-
-    /// <summary>ε ∈ [0, 1], or null for the scene's default.</summary>
-    public float? Restitution { get; private set; }
-
-    /// <summary>μ ≥ 0, or null for the scene's default.</summary>
-    public float? Friction { get; private set; }
-
-    /// <summary>Steps to run (≥ 1), or null for the scene's default.</summary>
-    public int? Steps { get; private set; }
-
-    /// <summary>Time step in seconds (&gt; 0), or null for the default.</summary>
-    public float? Dt { get; private set; }
-
-    /// <summary>Print every K-th step (≥ 1), or null for about 50 rows.</summary>
-    public int? Every { get; private set; }
-
-    /// <summary>Table or CSV.</summary>
-    public OutputFormat Format { get; private set; } = OutputFormat.Table;
-
-    /// <summary>The file to write to, or null for standard output.</summary>
-    public string? OutputPath { get; private set; }
-
-    /// <summary>True when <c>--help</c> (or <c>-h</c>) was given; the other options are then ignored.</summary>
-    public bool Help { get; private set; }
-
-    /// <summary>
-    /// Parses the command line. On failure returns false and a one-line <paramref name="error"/> (without the
-    /// "error:" prefix).
-    /// </summary>
-    public static bool TryParse(IReadOnlyList<string> args, out Options options, out string error)
+    private readonly Option<SceneKind> _scene = Choice("--scene", "The scene to run", s_scenes);
+    private readonly Option<ResponderKind> _responder = Choice("--responder", "The collision responder", s_responders);
+    private readonly Option<float?> _restitution = Real("--restitution", "EPS", "Coefficient of restitution eps, 0 to 1 [default: per scene]", 0, 1, minExclusive: false);
+    private readonly Option<float?> _friction = Real("--friction", "MU", $"Coulomb friction coefficient mu, 0 to {Options.MaxFriction} [default: per scene]", 0, Options.MaxFriction, minExclusive: false);
+    private readonly Option<int?> _steps = Whole("--steps", "N", $"Number of steps, 1 to {Options.MaxSteps} [default: per scene]", 1, Options.MaxSteps);
+    private readonly Option<float?> _dt = Real("--dt", "SECONDS", $"Time step, more than 0 and at most {Options.MaxDt} s [default: {SceneFactory.DefaultDt}]", 0, Options.MaxDt, minExclusive: true);
+    private readonly Option<int?> _every = Whole("--every", "K", $"Print every K-th step and the last, 1 to {Options.MaxSteps} [default: about 50 rows; 1,000 frames for svg and html]", 1, Options.MaxSteps);
+    private readonly Option<OutputFormat> _format = Choice("--format", "The output format", s_formats);
+    private readonly Option<string?> _output = new("--output", "-o")
     {
-        options = new Options();
-        error = string.Empty;
-        foreach (string arg in args)
+        Description = "Write to FILE instead of standard output",
+        HelpName = "FILE",
+        Arity = ArgumentArity.ExactlyOne,
+    };
+
+    /// <summary>Builds the command; <paramref name="run"/> is what a valid command line does.</summary>
+    public CommandLine(Func<Options, int> run)
+    {
+        _output.Validators.Add(result =>
         {
-            if (arg is "--help" or "-h")
+            if (result.Tokens.Count == 1 && string.IsNullOrWhiteSpace(result.Tokens[0].Value))
             {
-                options.Help = true;
-                return true;
+                result.AddError("--output needs a file name");
             }
-        }
-
-        for (int i = 0; i < args.Count; i++)
+        });
+        Command = new RootCommand(
+            "Runs a scene of the SimpleDynamics library and writes its trajectory: time, and per body position (m), "
+            + "velocity (m/s) and angular velocity (rad/s), with the world's diagnostics (kinetic, potential and mechanical "
+            + "energy in J, linear momentum in kg m/s, touching contacts, largest penetration in m). Many-body scenes print "
+            + "a summary of all bodies in the table. svg draws the run; html replays it in a browser. Numbers use '.' as the "
+            + "decimal separator. Exit codes: 0 success, 1 the output file could not be written, 2 invalid options.")
         {
-            string arg = args[i];
-            if (!arg.StartsWith("--", StringComparison.Ordinal))
-            {
-                error = $"unexpected argument '{arg}' (see --help)";
-                return false;
-            }
-
-            string name = arg;
-            string? value = null;
-            int equals = arg.IndexOf('=', StringComparison.Ordinal);
-            if (equals >= 0)
-            {
-                name = arg[..equals];
-                value = arg[(equals + 1)..];
-            }
-
-            if (!IsKnown(name))
-            {
-                error = $"unknown option '{name}' (see --help)";
-                return false;
-            }
-
-            if (value is null)
-            {
-                if (i + 1 >= args.Count || args[i + 1].StartsWith("--", StringComparison.Ordinal))
-                {
-                    error = $"option '{name}' needs a value";
-                    return false;
-                }
-
-                value = args[++i];
-            }
-
-            if (!options.TryApply(name, value, out error))
-            {
-                return false;
-            }
-        }
-
-        return true;
+            _scene, _responder, _restitution, _friction, _steps, _dt, _every, _format, _output,
+        };
+        Command.SetAction(parse => run(Read(parse)));
     }
 
-    private static bool IsKnown(string name) => name is "--scene" or "--responder" or "--restitution" or "--friction"
-        or "--steps" or "--dt" or "--every" or "--format" or "--output";
+    /// <summary>The root command, with generated help (--help, -h, -?) and version (--version).</summary>
+    public RootCommand Command { get; }
 
-    private bool TryApply(string name, string value, out string error)
+    private Options Read(ParseResult parse) => new()
     {
-        error = string.Empty;
-        switch (name)
+        Scene = parse.GetValue(_scene),
+        Responder = parse.GetValue(_responder),
+        Restitution = parse.GetValue(_restitution),
+        Friction = parse.GetValue(_friction),
+        Steps = parse.GetValue(_steps),
+        Dt = parse.GetValue(_dt),
+        Every = parse.GetValue(_every),
+        Format = parse.GetValue(_format),
+        OutputPath = parse.GetValue(_output),
+    };
+
+    /// <summary>An option naming one of <paramref name="choices"/>; the first is the default.</summary>
+    private static Option<T> Choice<T>(string name, string description, (string Name, T Kind, string Help)[] choices)
+    {
+        string names = string.Join("|", choices.Select(c => c.Name));
+        string help = description + ": " + string.Join("; ", choices.Select(c => c.Name + " = " + c.Help)) + $" [default: {choices[0].Name}]";
+        T defaultValue = choices[0].Kind;
+        var option = new Option<T>(name)
         {
-            case "--scene":
-                if (!TryLookUp(s_scenes, name, value, out SceneKind scene, out error))
-                {
-                    return false;
-                }
+            Description = help,
+            HelpName = names,
+            Arity = ArgumentArity.ExactlyOne, // left out, the option reads default(T): the first choice
+        };
+        option.CustomParser = result =>
+        {
+            string text = Single(result);
+            if (IsOptionName(text))
+            {
+                result.AddError($"{name} needs a value, but the next argument is the option {text}");
+                return defaultValue;
+            }
 
-                Scene = scene;
-                return true;
-            case "--responder":
-                if (!TryLookUp(s_responders, name, value, out ResponderKind responder, out error))
+            foreach (var choice in choices)
+            {
+                if (string.Equals(choice.Name, text, StringComparison.Ordinal))
                 {
-                    return false;
+                    return choice.Kind;
                 }
+            }
 
-                Responder = responder;
-                return true;
-            case "--format":
-                if (!TryLookUp(s_formats, name, value, out OutputFormat format, out error))
-                {
-                    return false;
-                }
-
-                Format = format;
-                return true;
-            case "--output":
-                if (string.IsNullOrWhiteSpace(value))
-                {
-                    error = "option '--output' needs a file name";
-                    return false;
-                }
-
-                OutputPath = value;
-                return true;
-            case "--restitution":
-                if (!TryFloat(name, value, out float restitution, out error))
-                {
-                    return false;
-                }
-
-                if (!(restitution >= 0f && restitution <= 1f))
-                {
-                    error = $"--restitution must be between 0 and 1, got {value}";
-                    return false;
-                }
-
-                Restitution = restitution;
-                return true;
-            case "--friction":
-                if (!TryFloat(name, value, out float friction, out error))
-                {
-                    return false;
-                }
-
-                if (!(friction >= 0f))
-                {
-                    error = $"--friction must be 0 or more, got {value}";
-                    return false;
-                }
-
-                Friction = friction;
-                return true;
-            case "--dt":
-                if (!TryFloat(name, value, out float dt, out error))
-                {
-                    return false;
-                }
-
-                if (!(dt > 0f))
-                {
-                    error = $"--dt must be greater than 0, got {value}";
-                    return false;
-                }
-
-                Dt = dt;
-                return true;
-            case "--steps":
-                if (!TryInt(name, value, out int steps, out error))
-                {
-                    return false;
-                }
-
-                if (steps < 1)
-                {
-                    error = $"--steps must be at least 1, got {value}";
-                    return false;
-                }
-
-                Steps = steps;
-                return true;
-            default: // "--every", the last known option
-                if (!TryInt(name, value, out int every, out error))
-                {
-                    return false;
-                }
-
-                if (every < 1)
-                {
-                    error = $"--every must be at least 1, got {value}";
-                    return false;
-                }
-
-                Every = every;
-                return true;
-        }
+            result.AddError($"unknown value '{text}' for {name}; expected one of: {string.Join(", ", choices.Select(c => c.Name))}");
+            return defaultValue;
+        };
+        return option;
     }
 
-    private static bool TryLookUp<T>(Dictionary<string, T> table, string name, string value, out T result, out string error)
+    private static Option<float?> Real(string name, string helpName, string description, double min, double max, bool minExclusive)
     {
-        if (table.TryGetValue(value, out T? found))
+        var option = new Option<float?>(name) { Description = description, HelpName = helpName, Arity = ArgumentArity.ExactlyOne };
+        string range = minExclusive
+            ? Invariant($"more than {min} and at most {max}")
+            : Invariant($"between {min} and {max}");
+        option.CustomParser = result =>
         {
-            result = found;
-            error = string.Empty;
-            return true;
-        }
+            string text = Single(result);
+            if (IsOptionName(text))
+            {
+                result.AddError($"{name} needs a value, but the next argument is the option {text}");
+                return null;
+            }
 
-        result = default!;
-        error = $"unknown value '{value}' for {name}; expected one of: {string.Join(", ", table.Keys)}";
-        return false;
+            // double.TryParse accepts "NaN" and "Infinity", and "1e999" becomes infinity: a finite number is required.
+            if (!double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out double value) || !double.IsFinite(value))
+            {
+                result.AddError($"{name} needs a number such as 0.25 ('.' as decimal separator), got '{text}'");
+                return null;
+            }
+
+            bool tooSmall = minExclusive ? !(value > min) : value < min;
+            if (tooSmall || value > max)
+            {
+                result.AddError($"{name} must be {range}, got {text} ({(tooSmall ? "too small" : "too large")})");
+                return null;
+            }
+
+            return (float)value;
+        };
+        return option;
     }
 
-    private static bool TryFloat(string name, string value, out float result, out string error)
+    private static Option<int?> Whole(string name, string helpName, string description, int min, int max)
     {
-        // float.TryParse accepts "NaN" and "Infinity"; a finite number is required.
-        if (float.TryParse(value, NumberStyles.Float, CultureInfo.InvariantCulture, out result) && float.IsFinite(result))
+        var option = new Option<int?>(name) { Description = description, HelpName = helpName, Arity = ArgumentArity.ExactlyOne };
+        option.CustomParser = result =>
         {
-            error = string.Empty;
-            return true;
-        }
+            string text = Single(result);
+            if (IsOptionName(text))
+            {
+                result.AddError($"{name} needs a value, but the next argument is the option {text}");
+                return null;
+            }
 
-        error = $"{name} needs a finite number, got '{value}'";
-        return false;
+            // BigInteger reads any whole number, so one too large for int is reported as too large, not as "not a number".
+            if (!BigInteger.TryParse(text, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out BigInteger value))
+            {
+                result.AddError($"{name} needs a whole number, got '{text}'");
+                return null;
+            }
+
+            if (value < min)
+            {
+                result.AddError(Invariant($"{name} must be at least {min}, got {text} (too small)"));
+                return null;
+            }
+
+            if (value > max)
+            {
+                result.AddError(Invariant($"{name} must be at most {max}, got {text} (too large)"));
+                return null;
+            }
+
+            return (int)value;
+        };
+        return option;
     }
 
-    private static bool TryInt(string name, string value, out int result, out string error)
-    {
-        if (int.TryParse(value, NumberStyles.Integer, CultureInfo.InvariantCulture, out result))
-        {
-            error = string.Empty;
-            return true;
-        }
+    /// <summary>"--dt" or "-o": an option name where a value should be (System.CommandLine takes it as the value).</summary>
+    private static bool IsOptionName(string text) => text.StartsWith("-", StringComparison.Ordinal) && text.Length > 1 && !char.IsDigit(text[1]) && text[1] != '.';
 
-        error = $"{name} needs a whole number, got '{value}'";
-        return false;
-    }
+    private static string Single(ArgumentResult result) => result.Tokens.Count > 0 ? result.Tokens[0].Value : string.Empty;
+
+    private static string Invariant(FormattableString text) => text.ToString(CultureInfo.InvariantCulture);
 }

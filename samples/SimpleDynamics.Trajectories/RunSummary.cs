@@ -18,6 +18,7 @@ public sealed class RunSummary
         StartMechanicalEnergy = d.MechanicalEnergy;
         StartKineticEnergy = d.KineticEnergy;
         MaxMechanicalEnergy = d.MechanicalEnergy;
+        MaxKineticEnergy = d.KineticEnergy;
         MaxPenetration = d.MaxPenetration;
         SmallestRadius = float.PositiveInfinity;
         foreach (RigidBody body in world.Bodies)
@@ -43,6 +44,9 @@ public sealed class RunSummary
     /// <summary>The largest mechanical energy (J) after any step.</summary>
     public double MaxMechanicalEnergy { get; private set; }
 
+    /// <summary>The largest kinetic energy (J) after any step.</summary>
+    public double MaxKineticEnergy { get; private set; }
+
     /// <summary>The largest penetration (m) after any step.</summary>
     public float MaxPenetration { get; private set; }
 
@@ -62,6 +66,7 @@ public sealed class RunSummary
         EndMechanicalEnergy = d.MechanicalEnergy;
         EndKineticEnergy = d.KineticEnergy;
         MaxMechanicalEnergy = Math.Max(MaxMechanicalEnergy, d.MechanicalEnergy);
+        MaxKineticEnergy = Math.Max(MaxKineticEnergy, d.KineticEnergy);
         MaxPenetration = MathF.Max(MaxPenetration, d.MaxPenetration);
         foreach (RigidBody body in world.Bodies)
         {

@@ -10,7 +10,7 @@ namespace SimpleDynamics.Trajectories;
 /// <summary>
 /// Writes trajectories: per printed step the time, each body's position, velocity and angular velocity, and the
 /// world's diagnostics. A run calls <see cref="BeginScene"/>, then <see cref="WriteStep"/> per printed step,
-/// then <see cref="EndScene"/>, once per scene.
+/// then <see cref="EndScene"/>, once per scene, and <see cref="Complete"/> at the end.
 /// </summary>
 public abstract class TrajectoryWriter
 {
@@ -19,6 +19,8 @@ public abstract class TrajectoryWriter
     {
         OutputFormat.Table => new TableTrajectoryWriter(output),
         OutputFormat.Csv => new CsvTrajectoryWriter(output),
+        OutputFormat.Svg => new SvgTrajectoryWriter(output),
+        OutputFormat.Html => new HtmlTrajectoryWriter(output),
         _ => throw new ArgumentOutOfRangeException(nameof(format), format, "Unknown format."),
     };
 
@@ -28,8 +30,52 @@ public abstract class TrajectoryWriter
     /// <summary>Writes the state after <paramref name="step"/> steps.</summary>
     public abstract void WriteStep(Scene scene, int step);
 
-    /// <summary>Ends a scene with what the whole run did.</summary>
-    public abstract void EndScene(Scene scene, RunSummary summary);
+    /// <summary>Ends a scene with what the whole run did and the warnings its checks raised.</summary>
+    public abstract void EndScene(Scene scene, RunSummary summary, IReadOnlyList<string> warnings);
+
+    /// <summary>Ends the run; writers that draw the whole run at once write it here.</summary>
+    public virtual void Complete()
+    {
+    }
+
+    /// <summary>
+    /// The contacts whose bodies touch or overlap now, penetration ≥ 0, measured from the bodies' positions after
+    /// the step. Detection also reports speculative pairs that may touch within the next step; they are not counted.
+    /// </summary>
+    public static int TouchingContacts(World world)
+    {
+        int count = 0;
+        foreach (SimpleDynamics.Collision.Contact contact in world.Collisions.Contacts)
+        {
+            if (Penetration(world, contact) >= 0)
+            {
+                count++;
+            }
+        }
+
+        return count;
+    }
+
+    /// <summary>r_A + r_B − d for two bodies; r_A − (distance of A's centre from the plane) for a plane contact.</summary>
+    public static float Penetration(World world, in SimpleDynamics.Collision.Contact contact)
+    {
+        RigidBody a = contact.BodyA, b = contact.BodyB;
+        if (!contact.IsPlaneContact)
+        {
+            return a.Radius + b.Radius - Vector3.Distance(a.Position, b.Position);
+        }
+
+        float penetration = float.NegativeInfinity;
+        foreach (SimpleDynamics.Collision.StaticPlane plane in world.Planes)
+        {
+            if (Vector3.Dot(plane.Normal, contact.Normal) > 0.9999f)
+            {
+                penetration = MathF.Max(penetration, a.Radius - plane.DistanceTo(a.Position));
+            }
+        }
+
+        return penetration;
+    }
 
     /// <summary>
     /// The centre of mass of the dynamic bodies, the velocity of the centre of mass (Σ m v / Σ m), their mean
@@ -95,10 +141,10 @@ public sealed class TableTrajectoryWriter : TrajectoryWriter
         _out.WriteLine(scene.SummaryOnly
             ? "# per row: the dynamic bodies' centre of mass (m), its velocity (m/s), their largest speed (m/s); then the diagnostics"
             : "# per row: position (m), velocity (m/s), angular velocity (rad/s); on each step's first line the diagnostics");
-        _out.WriteLine("# diagnostics: KE, PE, E = kinetic, potential, mechanical energy (J); p = linear momentum (kg m/s); contacts; max pen = largest penetration (m)");
+        _out.WriteLine("# diagnostics: KE, PE, E = kinetic, potential, mechanical energy (J); p = linear momentum (kg m/s); contacts = touching pairs; max pen = largest penetration (m)");
         if (scene.Expectation is not null)
         {
-            _out.WriteLine($"# expect: {scene.Expectation}");
+            _out.WriteLine($"# expect: {scene.Expectation.Text}");
         }
 
         var header = new StringBuilder();
@@ -135,7 +181,7 @@ public sealed class TableTrajectoryWriter : TrajectoryWriter
             line.Append(time).Append(' ').Append(count.ToString(CultureInfo.InvariantCulture).PadRight(bodyWidth));
             Append(line, position, scene.Planar);
             Append(line, velocity, scene.Planar);
-            line.Append(Fixed(maxSpeed, 3).PadLeft(Width));
+            line.Append(Pad(Fixed(maxSpeed, 3), Width));
             _out.WriteLine(line.Append(diagnostics).ToString());
             return;
         }
@@ -149,7 +195,7 @@ public sealed class TableTrajectoryWriter : TrajectoryWriter
             Append(line, body.LinearVelocity, scene.Planar);
             if (scene.Planar)
             {
-                line.Append(Fixed(body.AngularVelocity.Z, 3).PadLeft(Width));
+                line.Append(Pad(Fixed(body.AngularVelocity.Z, 3), Width));
             }
             else
             {
@@ -166,7 +212,7 @@ public sealed class TableTrajectoryWriter : TrajectoryWriter
     }
 
     /// <inheritdoc />
-    public override void EndScene(Scene scene, RunSummary summary)
+    public override void EndScene(Scene scene, RunSummary summary, IReadOnlyList<string> warnings)
     {
         double rise = summary.MaxMechanicalEnergy - summary.StartMechanicalEnergy;
         _out.WriteLine(Format(
@@ -178,30 +224,36 @@ public sealed class TableTrajectoryWriter : TrajectoryWriter
             _out.WriteLine("# warning: the motion left the z = 0 plane; the table does not show z");
         }
 
-        _out.WriteLine(summary.FirstNonFiniteStep is int bad
-            ? Format($"# warning: a body's state became NaN or infinite at step {bad}")
-            : "# summary: every state finite (no NaN)");
+        if (summary.FirstNonFiniteStep is null)
+        {
+            _out.WriteLine("# summary: every state finite (no NaN)");
+        }
+
+        foreach (string warning in warnings)
+        {
+            _out.WriteLine("# warning: " + warning);
+        }
     }
 
     private string Diagnostics(Scene scene)
     {
         WorldDiagnostics d = scene.World.Diagnostics;
         var text = new StringBuilder("  |");
-        text.Append(Fixed(d.KineticEnergy, 3).PadLeft(Width));
-        text.Append(Fixed(d.PotentialEnergy, 3).PadLeft(Width));
-        text.Append(Fixed(d.MechanicalEnergy, 3).PadLeft(Width));
+        text.Append(Pad(Fixed(d.KineticEnergy, 3), Width));
+        text.Append(Pad(Fixed(d.PotentialEnergy, 3), Width));
+        text.Append(Pad(Fixed(d.MechanicalEnergy, 3), Width));
         Append(text, d.LinearMomentum, scene.Planar);
-        text.Append(d.ContactCount.ToString(CultureInfo.InvariantCulture).PadLeft(Width));
-        text.Append(Fixed(d.MaxPenetration, 4).PadLeft(Width + 1));
+        text.Append(Pad(TouchingContacts(scene.World).ToString(CultureInfo.InvariantCulture), Width));
+        text.Append(Pad(Fixed(d.MaxPenetration, 4), Width + 1));
         return text.ToString();
     }
 
     private static void Append(StringBuilder line, Vector3 v, bool planar)
     {
-        line.Append(Fixed(v.X, 3).PadLeft(Width)).Append(Fixed(v.Y, 3).PadLeft(Width));
+        line.Append(Pad(Fixed(v.X, 3), Width)).Append(Pad(Fixed(v.Y, 3), Width));
         if (!planar)
         {
-            line.Append(Fixed(v.Z, 3).PadLeft(Width));
+            line.Append(Pad(Fixed(v.Z, 3), Width));
         }
     }
 
@@ -237,7 +289,8 @@ public sealed class TableTrajectoryWriter : TrajectoryWriter
         return 4;
     }
 
-    private static string Pad(string text, int width) => text.PadLeft(width);
+    /// <summary>Right-aligned in <paramref name="width"/>, and always after a space: a wide number never runs into its neighbour.</summary>
+    private static string Pad(string text, int width) => text.Length < width ? text.PadLeft(width) : " " + text;
 
     /// <summary>Fixed-point, invariant, and without the "-0.000" of a tiny negative number.</summary>
     private static string Fixed(double value, int decimals)
@@ -263,7 +316,8 @@ public sealed class TableTrajectoryWriter : TrajectoryWriter
 /// Comma-separated values with one header row for the whole run; each row is one body at one printed step,
 /// with full 3-D vectors and the world's diagnostics repeated on every body's row. A summary-only scene writes
 /// one row per step for its centre of mass, body "com" (its mean angular velocity in the w columns).
-/// Numbers are invariant and round-trip (shortest form that parses back to the same float).
+/// Every number has one format, floats and doubles alike: invariant, seven significant digits (what a float
+/// holds; the diagnostics are summed in double from float states), "0" for zero.
 /// </summary>
 public sealed class CsvTrajectoryWriter : TrajectoryWriter
 {
@@ -295,10 +349,9 @@ public sealed class CsvTrajectoryWriter : TrajectoryWriter
     {
         World world = scene.World;
         WorldDiagnostics d = world.Diagnostics;
-        string prefix = string.Join(",", scene.Name, step.ToString(CultureInfo.InvariantCulture),
-            Math.Round(world.Time, TimeDigits(scene.Dt)).ToString(CultureInfo.InvariantCulture));
+        string prefix = string.Join(",", scene.Name, step.ToString(CultureInfo.InvariantCulture), Number(world.Time));
         string diagnostics = string.Join(",", Number(d.KineticEnergy), Number(d.PotentialEnergy), Number(d.MechanicalEnergy),
-            Vector(d.LinearMomentum), d.ContactCount.ToString(CultureInfo.InvariantCulture), Number(d.MaxPenetration));
+            Vector(d.LinearMomentum), TouchingContacts(world).ToString(CultureInfo.InvariantCulture), Number(d.MaxPenetration));
         if (scene.SummaryOnly)
         {
             var (position, velocity, spin, _, _) = CentreOfMass(world);
@@ -315,20 +368,16 @@ public sealed class CsvTrajectoryWriter : TrajectoryWriter
     }
 
     /// <inheritdoc />
-    public override void EndScene(Scene scene, RunSummary summary)
+    public override void EndScene(Scene scene, RunSummary summary, IReadOnlyList<string> warnings)
     {
-        // CSV holds data rows only; the summary is for the table.
+        // CSV holds data rows only; the summary is for the table, warnings also go to standard error.
     }
-
-    /// <summary>
-    /// World.Time sums float time steps, so 3 × 0.01f reads 0.029999999; rounding to a few digits below the
-    /// step's own shows the time the user asked for.
-    /// </summary>
-    private static int TimeDigits(float dt) => Math.Clamp((int)Math.Ceiling(-Math.Log10(dt)) + 3, 6, 15);
 
     private static string Vector(Vector3 v) => string.Join(",", Number(v.X), Number(v.Y), Number(v.Z));
 
-    private static string Number(float value) => value.ToString(CultureInfo.InvariantCulture);
-
-    private static string Number(double value) => value.ToString(CultureInfo.InvariantCulture);
+    /// <summary>
+    /// The one number format (<see cref="Trajectories.Format.Number"/>). World.Time sums float steps, so 3 × 0.01f
+    /// reads 0.029999999 in double; seven digits show 0.03.
+    /// </summary>
+    private static string Number(double value) => Trajectories.Format.Number(value);
 }

@@ -104,14 +104,127 @@ public class TrajectorySampleTests
 
     [Theory]
     [MemberData(nameof(ScenesAndResponders))]
-    public void Every_scene_runs_with_every_responder(string scene, string responder)
+    public void Every_scene_runs_with_every_responder_and_every_expectation_printed_holds(string scene, string responder)
     {
         var (code, stdout, stderr) = Run("--scene", scene, "--responder", responder);
 
         Assert.Equal(0, code);
-        Assert.Equal(string.Empty, stderr);
         Assert.Contains(Lines(stdout), IsHeader);
         Assert.Contains("# summary: every state finite (no NaN)", stdout, StringComparison.Ordinal);
+        Assert.All(Lines(stderr), line => Assert.StartsWith("warning: ", line, StringComparison.Ordinal));
+        // An expect: line is printed only where the responder does what it says.
+        Assert.DoesNotContain(": expected ", stderr, StringComparison.Ordinal);
+        Assert.DoesNotContain("# warning: expected ", stdout, StringComparison.Ordinal);
+        if (responder != "projection")
+        {
+            Assert.Equal(string.Empty, stderr); // only projection adds energy
+        }
+    }
+
+    [Fact]
+    public void Projection_gains_energy_and_says_so_without_promising_anything()
+    {
+        var (code, stdout, stderr) = Run("--scene", "bounce", "--responder", "projection");
+
+        Assert.Equal(0, code);
+        Assert.DoesNotContain("# expect:", stdout, StringComparison.Ordinal);
+        string warning = Assert.Single(Lines(stderr));
+        Assert.StartsWith("warning: bounce: mechanical energy rose from 29.43 J to ", warning, StringComparison.Ordinal);
+        Assert.Contains("# warning: mechanical energy rose from 29.43 J to ", stdout, StringComparison.Ordinal);
+    }
+
+    [Theory]
+    [InlineData("offcentre", "inelastic")]
+    [InlineData("offcentre", "projection")]
+    [InlineData("row", "impulse")]
+    [InlineData("slide", "inelastic")]
+    [InlineData("pile", "impulse")]
+    public void No_expectation_is_printed_where_the_responder_does_not_meet_it(string scene, string responder)
+    {
+        var (_, stdout, _) = Run("--scene", scene, "--responder", responder);
+
+        Assert.DoesNotContain("# expect:", stdout, StringComparison.Ordinal);
+    }
+
+    [Fact]
+    public void A_run_too_short_for_the_expectation_does_not_state_it()
+    {
+        var (code, stdout, stderr) = Run("--scene", "pile", "--steps", "5");
+
+        Assert.Equal(0, code);
+        Assert.DoesNotContain("# expect:", stdout, StringComparison.Ordinal);
+        Assert.Equal(string.Empty, stderr);
+    }
+
+    [Fact]
+    public void The_contacts_column_counts_touching_contacts_only()
+    {
+        // The bouncing ball: detection reports the ground as a speculative pair just before each impact, while
+        // the ball is still above it; those rows must say 0.
+        var (code, bounce, _) = Run("--scene", "bounce", "--format", "csv", "--every", "1");
+        Assert.Equal(0, code);
+        int contacts = CsvColumn("contacts"), y = CsvColumn("y");
+        foreach (string[] row in Lines(bounce).Skip(1).Select(line => line.Split(',')))
+        {
+            if (Number(row[y]) > 0.5 + 1e-3)
+            {
+                Assert.True(row[contacts] == "0", $"the ball is in the air (y = {row[y]}) but {row[contacts]} contacts are counted");
+            }
+        }
+
+        // The sliding ball lies on the ground: one touching contact once detection has run.
+        var (_, slide, _) = Run("--scene", "slide", "--format", "csv");
+        Assert.All(Lines(slide).Skip(2).Select(line => line.Split(',')), row => Assert.Equal("1", row[contacts]));
+    }
+
+    [Fact]
+    public void Wide_numbers_never_run_into_their_neighbours()
+    {
+        // A frictionless ball sliding at 5 m/s for 3,000 s ends 15 km away: "15000.000" fills its column.
+        var (code, stdout, _) = Run("--scene", "slide", "--friction", "0", "--dt", "0.1", "--steps", "30000", "--every", "10000");
+
+        Assert.Equal(0, code);
+        List<string[]> rows = TableRows(stdout, "slide");
+        Assert.Equal(4, rows.Count);
+        Assert.Equal("15000.000", rows[^1][2]);
+        Assert.All(rows, row => Assert.Equal(15, row.Length)); // time body x y vx vy wz | KE PE E px py contacts max-pen
+    }
+
+    [Fact]
+    public void Csv_numbers_have_one_format_seven_significant_digits_at_most()
+    {
+        var (_, stdout, _) = Run("--scene", "offcentre", "--format", "csv", "--every", "1", "--steps", "30");
+
+        string[] lines = Lines(stdout);
+        Assert.StartsWith("offcentre,3,0.03,", lines[1 + 3 * 2], StringComparison.Ordinal); // float time sums read 0.03
+        foreach (string field in lines.Skip(1).SelectMany(line => line.Split(',').Skip(2)).Where(f => f is not ("left" or "right")))
+        {
+            string digits = field.TrimStart('-').Split('E')[0].Replace(".", string.Empty, StringComparison.Ordinal).TrimStart('0');
+            Assert.True(digits.Length <= 7, $"'{field}' has more than seven significant digits");
+            Assert.NotEqual("-0", field);
+        }
+    }
+
+    [Fact]
+    public void Long_runs_report_progress_on_stderr_only()
+    {
+        long saved = Program.ProgressThreshold;
+        try
+        {
+            Program.ProgressThreshold = 100;
+            var (code, stdout, stderr) = Run("--scene", "bounce", "--steps", "200");
+
+            Assert.Equal(0, code);
+            string[] progress = Lines(stderr);
+            Assert.Equal(10, progress.Length);
+            Assert.Equal("progress: bounce 10% (step 20 of 200)", progress[0]);
+            Assert.Equal("progress: bounce 100% (step 200 of 200)", progress[^1]);
+            Assert.DoesNotContain("progress", stdout, StringComparison.Ordinal);
+        }
+        finally
+        {
+            Program.ProgressThreshold = saved;
+        }
     }
 
     [Fact]
@@ -157,6 +270,9 @@ public class TrajectorySampleTests
     [InlineData("--output")]
     [InlineData("--steps", "--dt", "0.1")]
     [InlineData("stray")]
+    [InlineData("--steps", "99999999999")]
+    [InlineData("--dt", "1e9")]
+    [InlineData("--format", "pdf")]
     public void Bad_options_print_one_error_line_and_exit_2(params string[] args)
     {
         var (code, stdout, stderr) = Run(args);
@@ -168,15 +284,38 @@ public class TrajectorySampleTests
         Assert.StartsWith("error:", lines[0], StringComparison.Ordinal);
     }
 
-    [Fact]
-    public void Help_prints_the_usage_and_exits_0()
+    [Theory]
+    [InlineData("--steps 99999999999", "error: --steps must be at most 10000000, got 99999999999 (too large)")]
+    [InlineData("--steps 0", "error: --steps must be at least 1, got 0 (too small)")]
+    [InlineData("--steps 1.5", "error: --steps needs a whole number, got '1.5'")]
+    [InlineData("--dt 1e9", "error: --dt must be more than 0 and at most 0.1, got 1e9 (too large)")]
+    [InlineData("--dt 0", "error: --dt must be more than 0 and at most 0.1, got 0 (too small)")]
+    [InlineData("--dt 0,01", "error: --dt needs a number such as 0.25 ('.' as decimal separator), got '0,01'")]
+    [InlineData("--friction Infinity", "error: --friction needs a number such as 0.25")]
+    [InlineData("--restitution 1.1", "error: --restitution must be between 0 and 1, got 1.1 (too large)")]
+    [InlineData("--steps --dt 0.1", "error: --steps needs a value, but the next argument is the option --dt")]
+    [InlineData("--scene moon", "error: unknown value 'moon' for --scene; expected one of: default, bounce, offcentre, pile, row, slide")]
+    public void Bad_values_are_reported_with_the_true_reason(string args, string error)
     {
-        var (code, stdout, stderr) = Run("--help");
+        var (code, _, stderr) = Run(args.Split(' '));
+
+        Assert.Equal(2, code);
+        Assert.StartsWith(error, stderr, StringComparison.Ordinal);
+    }
+
+    [Theory]
+    [InlineData("--help")]
+    [InlineData("-h")]
+    [InlineData("-?")]
+    public void Help_is_generated_and_exits_0(string flag)
+    {
+        var (code, stdout, stderr) = Run(flag);
 
         Assert.Equal(0, code);
         Assert.Equal(string.Empty, stderr);
-        Assert.StartsWith("Usage:", stdout, StringComparison.Ordinal);
-        foreach (string option in new[] { "--scene", "--responder", "--restitution", "--friction", "--steps", "--dt", "--every", "--format", "--output" })
+        Assert.Contains("Usage:", stdout, StringComparison.Ordinal);
+        Assert.Contains("Exit codes: 0 success, 1 the output file could not be written, 2 invalid options.", stdout, StringComparison.Ordinal);
+        foreach (string option in new[] { "--scene", "--responder", "--restitution", "--friction", "--steps", "--dt", "--every", "--format", "--output", "svg", "html" })
         {
             Assert.Contains(option, stdout, StringComparison.Ordinal);
         }
@@ -281,6 +420,8 @@ public class TrajectorySampleTests
 
         return rows;
     }
+
+    private static int CsvColumn(string name) => CsvTrajectoryWriter.Columns.ToList().IndexOf(name);
 
     private static double Number(string text) => double.Parse(text, NumberStyles.Float, CultureInfo.InvariantCulture);
 }
