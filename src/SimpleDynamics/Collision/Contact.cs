@@ -65,8 +65,15 @@ public struct Contact
     public readonly bool IsPlaneContact => PlaneIndex >= 0;
 
     /// <summary>Creates a contact, as a test or a custom detector would.</summary>
+    /// <exception cref="System.ArgumentNullException">A body is null.</exception>
+    /// <exception cref="System.ArgumentException">The point or normal is not finite, or the penetration is not a finite number.</exception>
     public Contact(RigidBody bodyA, RigidBody bodyB, Vector3 point, Vector3 normal, float penetration)
     {
+        Guard.NotNull(bodyA, nameof(bodyA));
+        Guard.NotNull(bodyB, nameof(bodyB));
+        Guard.Finite(point, nameof(point));
+        Guard.Finite(normal, nameof(normal));
+        Guard.Finite(penetration, nameof(penetration));
         BodyA = bodyA;
         BodyB = bodyB;
         Point = point;

@@ -29,10 +29,18 @@ public readonly struct ContactEvent
     public bool IsPlaneContact => PlaneIndex >= 0;
 
     /// <summary>Whether <paramref name="body"/> is one of the pair.</summary>
-    public bool Involves(RigidBody body) => BodyA == body || BodyB == body;
+    public bool Involves(RigidBody body)
+    {
+        Guard.NotNull(body, nameof(body));
+        return BodyA == body || BodyB == body;
+    }
 
     /// <summary>The other member of the pair when <paramref name="body"/> is one of two bodies; null for a plane.</summary>
-    public RigidBody? Other(RigidBody body) => BodyA == body ? BodyB : BodyA;
+    public RigidBody? Other(RigidBody body)
+    {
+        Guard.NotNull(body, nameof(body));
+        return BodyA == body ? BodyB : BodyA;
+    }
 
     /// <inheritdoc />
     public override string ToString() => IsPlaneContact ? $"{BodyA} – plane {PlaneIndex}" : $"{BodyA} – {BodyB}";

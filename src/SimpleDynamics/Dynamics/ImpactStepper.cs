@@ -21,9 +21,10 @@ namespace SimpleDynamics;
 /// the true velocity v₀ + a t, not the end-of-substep velocity: a ball that meets the ground bounces with the speed
 /// it arrives with, so a bounce with ε = 1 keeps the ball's mechanical energy and its apex.</para>
 /// <para><b>Depth limit.</b> Two bodies apart at the start of the substep collide when they touch. Two bodies
-/// already touching (a resting contact, left by the responder at its slop) collide when they would sink deeper than
-/// they are by a small tolerance (<see cref="DepthTolerance"/> of the smaller radius), so that the slow creep of a
-/// resting pile is left to the responder instead of becoming thousands of tiny impacts.</para>
+/// already touching collide as soon as they approach, unless a body is held by resting contacts and the pair only
+/// creeps (it would sink less than <see cref="HeldDepthTolerance"/> of the smaller radius in the substep): then they
+/// collide only if they sink that far, so that the slow creep of a resting pile is left to the responder instead of
+/// becoming thousands of tiny impacts.</para>
 /// <para><b>Nothing passes through anything.</b> After the responder has answered an impact, a pair whose centres
 /// still approach is stopped along the normal (an inelastic push through both centres), whatever the responder did.
 /// A body whose path leaves the sphere that detection covered for it (it was knocked into motion faster than it
@@ -36,8 +37,14 @@ namespace SimpleDynamics;
 /// </remarks>
 internal sealed class ImpactStepper
 {
-    /// <summary>A touching pair collides when it would sink deeper than it is by this fraction of the smaller radius.</summary>
-    public const float DepthTolerance = 1e-2f;
+    /// <summary>A touching pair of free bodies collides when it would sink deeper than it is by this fraction of the smaller radius.</summary>
+    public const float DepthTolerance = 0f;
+
+    /// <summary>
+    /// The same for a pair with a body held by resting contacts (a pile): the responder's sweeps leave such contacts
+    /// creeping by far less than this per substep, and they are the responder's to hold, not impacts.
+    /// </summary>
+    public const float HeldDepthTolerance = 1e-3f;
 
     /// <summary>
     /// Impacts one body may take part in during one substep with the responder's answer. A dense cluster hit hard can
@@ -65,6 +72,7 @@ internal sealed class ImpactStepper
     private double[] _t = new double[16];
     private int[] _version = new int[16];
     private int[] _impacts = new int[16];
+    private bool[] _held = new bool[16];
     private int[] _head = new int[16];
     private int[] _next = new int[32];
     private float[] _limit = new float[16];
@@ -133,7 +141,8 @@ internal sealed class ImpactStepper
         {
             RigidBody body = bodies[i];
             _x[i] = body.position;
-            if (body.linearVelocity == _forcedVelocity[i])
+            _held[i] = body.linearVelocity != _forcedVelocity[i];
+            if (!_held[i])
             {
                 // Free flight: from v₀ to v₁ at the uniform rate of gravity and forces, along a parabola.
                 _u[i] = _startVelocity[i];
@@ -347,13 +356,15 @@ internal sealed class ImpactStepper
 
     /// <summary>
     /// The depth at which a pair collides this substep: 0 (touching) if it is apart now, else its present depth
-    /// plus <see cref="DepthTolerance"/> of the smaller radius.
+    /// plus <see cref="DepthTolerance"/> of the smaller radius (<see cref="HeldDepthTolerance"/> if a body is held by
+    /// resting contacts).
     /// </summary>
     private float DepthLimit(in Contact contact)
     {
         RigidBody a = contact.BodyA;
         float penetration;
         float smaller = a.radius;
+        bool held = _held[a.index];
         if (contact.IsPlaneContact)
         {
             penetration = ContactGeometry.PlanePenetration(_x[a.index], a.radius, contact.Normal, contact.PlaneOffset);
@@ -363,9 +374,19 @@ internal sealed class ImpactStepper
             RigidBody b = contact.BodyB;
             penetration = ContactGeometry.CirclePenetration(_x[a.index], a.radius, _x[b.index], b.radius, out _);
             smaller = MathF.Min(smaller, b.radius);
+            held |= _held[b.index];
         }
 
-        return penetration < 0 ? 0f : penetration + DepthTolerance * smaller;
+        if (penetration < 0)
+        {
+            return 0f;
+        }
+
+        // A held pair creeping slower than the tolerance per substep is the responder's; one closing faster collides now.
+        float tolerance = (held ? HeldDepthTolerance : DepthTolerance) * smaller;
+        Vector3 chordB = contact.IsPlaneContact ? Vector3.Zero : _chord[contact.BodyB.index];
+        float closing = -Vector3.Dot(_chord[a.index] - chordB, contact.Normal);
+        return closing * _h > tolerance ? penetration : penetration + tolerance;
     }
 
     /// <summary>Predicts the next impact of contact <paramref name="k"/> and queues it if it falls within the substep.</summary>
@@ -510,9 +531,9 @@ internal sealed class ImpactStepper
             }
 
             RigidBody first = i < j ? body : other, second = i < j ? other : body;
-            if (!_pairs.Add(Contact.PairKey(first.Id, second.Id)))
+            if (!PairFilter.Allows(first, second) || !_pairs.Add(Contact.PairKey(first.Id, second.Id)))
             {
-                continue;
+                continue; // filtered or sensor pairs never become contacts; others may have one already
             }
 
             float penetration = ContactGeometry.CirclePenetration(first.position, first.radius, second.position, second.radius, out Vector3 normal);
@@ -603,6 +624,7 @@ internal sealed class ImpactStepper
         Buffers.EnsureCapacity(ref _t, n);
         Buffers.EnsureCapacity(ref _version, n);
         Buffers.EnsureCapacity(ref _impacts, n);
+        Buffers.EnsureCapacity(ref _held, n);
         Buffers.EnsureCapacity(ref _head, n);
     }
 

@@ -32,6 +32,8 @@ public sealed class MaterialMixing
     /// <summary>The combined restitution of a contact, given the responder's default.</summary>
     public float Restitution(in Contact contact, float responderDefault)
     {
+        Guard.ContactBodies(contact, nameof(contact));
+        Guard.UnitInterval(responderDefault, nameof(responderDefault));
         float? b = contact.IsPlaneContact ? contact.PlaneRestitution : contact.BodyB.restitution;
         float value = Combine(contact.BodyA.restitution, b, responderDefault, _restitution);
         if (!(value >= 0 && value <= 1))
@@ -45,6 +47,8 @@ public sealed class MaterialMixing
     /// <summary>The combined friction coefficient of a contact, given the responder's default.</summary>
     public float Friction(in Contact contact, float responderDefault)
     {
+        Guard.ContactBodies(contact, nameof(contact));
+        Guard.NonNegative(responderDefault, nameof(responderDefault));
         float? b = contact.IsPlaneContact ? contact.PlaneFriction : contact.BodyB.friction;
         float value = Combine(contact.BodyA.friction, b, responderDefault, _friction);
         if (!(value >= 0) || !float.IsFinite(value))

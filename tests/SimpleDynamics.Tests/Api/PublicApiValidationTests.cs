@@ -52,22 +52,25 @@ public class PublicApiValidationTests
         // directly in BadInputTests and ClearErrorTests.
         ["BruteForceDetector.FindContacts"] = "span parameter",
         ["SpatialHashDetector.FindContacts"] = "span parameter",
+        ["World.ContactsOf"] = "span parameter; its checks are tested in Game/ContactEventTests",
+        ["World.RayCastAll"] = "span parameter; its checks are tested in Game/QueryTests",
+        ["World.QueryPoint"] = "span parameter; its checks are tested in Game/QueryTests",
+        ["World.OverlapCircle"] = "span parameter; its checks are tested in Game/QueryTests",
+        ["World.OverlapBox"] = "span parameter; its checks are tested in Game/QueryTests",
 
-        // lead: files under Response/, ContactGeometry.cs, Contact.cs and WorldDiagnostics.cs are being redesigned
-        // with the step lifecycle; the failures these entries hide are listed in the api-robustness report.
-        ["Contact..ctor"] = "lead: no null/NaN checks (null bodies give NullReferenceException)",
-        ["ContactGeometry.*"] = "lead: no NaN checks; TryCollide(null, …) gives NullReferenceException",
-        ["MaterialMixing.Restitution"] = "lead: NaN responderDefault gives InvalidOperationException",
-        ["MaterialMixing.Friction"] = "lead: NaN responderDefault gives InvalidOperationException",
-        ["WorldDiagnostics.*"] = "lead: init-only measured values; decide whether they validate",
-        ["SequentialImpulseSolver.ResolveVelocities"] = "lead: responder stages are being replaced",
-        ["SequentialImpulseSolver.ResolvePositions"] = "lead: responder stages are being replaced",
-        ["ImpulseCollisionResponder.ResolveVelocities"] = "lead: responder stages are being replaced",
-        ["ImpulseCollisionResponder.ResolvePositions"] = "lead: responder stages are being replaced",
-        ["PerfectlyInelasticResponder.ResolveVelocities"] = "lead: responder stages are being replaced",
-        ["PerfectlyInelasticResponder.ResolvePositions"] = "lead: responder stages are being replaced",
-        ["ProjectionResponder.ResolveVelocities"] = "lead: responder stages are being replaced",
-        ["ProjectionResponder.ResolvePositions"] = "lead: responder stages are being replaced",
+        // The responder stages and StepContext.Expect run only inside World.Step, with the world's own context; called
+        // with any other context they throw InvalidOperationException by design (tested in Api/StepLifecycleTests).
+        ["*.BeginStep"] = "a stage: only World.Step calls it",
+        ["*.SolveVelocities"] = "a stage: only World.Step calls it",
+        ["*.Collide"] = "a stage: only World.Step calls it",
+        ["*.SolvePositions"] = "a stage: only World.Step calls it",
+        ["*.EndStep"] = "a stage: only World.Step calls it",
+        ["StepContext.Expect"] = "only meaningful during World.Step",
+
+        // Not yet validated (see the closing note of the world-laws and API issues): the narrow-phase functions are
+        // called in the hot path with values the world has already checked, and the diagnostics are measured values.
+        ["ContactGeometry.*"] = "hot-path geometry without argument checks yet",
+        ["WorldDiagnostics.*"] = "init-only measured values",
     };
 
     [Fact]
@@ -354,6 +357,14 @@ public class PublicApiValidationTests
         if (type == typeof(Contact)) return new Contact(new RigidBody(1f, 0.5f, Vector3.Zero), new RigidBody(1f, 0.5f, Vector3.UnitX), new Vector3(0.5f, 0, 0), -Vector3.UnitX, 0.1f);
         if (type == typeof(MaterialMixing)) return MaterialMixing.Default;
         if (type == typeof(Func<float, float, float>)) return (Func<float, float, float>)MathF.Max;
+        if (type == typeof(Func<RigidBody, RigidBody, bool>)) return (Func<RigidBody, RigidBody, bool>)((_, _) => true);
+        if (type == typeof(Func<RigidBody, int, bool>)) return (Func<RigidBody, int, bool>)((_, _) => true);
+        if (typeof(Delegate).IsAssignableFrom(type))
+        {
+            // A delegate built from its (object, IntPtr) constructor would point at nothing and crash when called.
+            throw new InvalidOperationException($"No sample for {type.Name}: add one to PublicApiValidationTests.Sample.");
+        }
+
         if (type == typeof(ICollisionResponder)) return new SequentialImpulseSolver();
         if (type == typeof(ICollisionDetector)) return new SpatialHashDetector();
         if (type.IsAssignableFrom(typeof(StaticPlane[]))) return new[] { StaticPlane.Ground(), StaticPlane.Ground(-1f) };

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using SimpleDynamics;
 using SimpleDynamics.Collision;
 using SimpleDynamics.Laws;
 using SimpleDynamics.Response;
@@ -16,23 +17,33 @@ public class LawKitTests
     }
 
     /// <summary>The impulse responder, plus a push on every separating contact.</summary>
-    private sealed class PushesSeparatingContacts : PairwiseResponder
+    private sealed class PushesSeparatingContacts : ICollisionResponder
     {
         private readonly ImpulseCollisionResponder _inner;
 
         public PushesSeparatingContacts(float restitution) => _inner = new ImpulseCollisionResponder(restitution);
 
-        public override void ResolveVelocity(ref Contact contact)
-        {
-            if (Vector3.Dot(contact.RelativeVelocity, contact.Normal) >= 0)
-            {
-                contact.BodyA.ApplyImpulse(0.1f * contact.Normal, contact.Point);
-                contact.BodyB.ApplyImpulse(-0.1f * contact.Normal, contact.Point);
-                return;
-            }
+        public void BeginStep(StepContext step) => _inner.BeginStep(step);
 
-            _inner.ResolveVelocity(ref contact);
+        // The world answers only approaching pairs at their impact; a responder's resting stage sees every contact,
+        // and this one wrongly pushes those that separate.
+        public void SolveVelocities(StepContext step)
+        {
+            foreach (ref Contact contact in step.Contacts.Contacts)
+            {
+                if (Vector3.Dot(contact.RelativeVelocity, contact.Normal) >= 0)
+                {
+                    contact.BodyA.ApplyImpulse(0.1f * contact.Normal, contact.Point);
+                    contact.BodyB.ApplyImpulse(-0.1f * contact.Normal, contact.Point);
+                }
+            }
         }
+
+        public void Collide(StepContext step, ref Contact contact) => _inner.Collide(step, ref contact);
+
+        public void SolvePositions(StepContext step) => _inner.SolvePositions(step);
+
+        public void EndStep(StepContext step) => _inner.EndStep(step);
     }
 
     /// <summary>Applies the impulse to A only: momentum is not conserved.</summary>
