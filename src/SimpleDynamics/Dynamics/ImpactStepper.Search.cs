@@ -1,0 +1,99 @@
+using System;
+using System.Numerics;
+using SimpleDynamics.Bodies;
+using SimpleDynamics.Collision;
+using SimpleDynamics.Response;
+
+namespace SimpleDynamics;
+
+// Looking a body up again when a collision sends it beyond the sphere detection covered for it.
+internal sealed partial class ImpactStepper
+{
+    /// <summary>Whether body i's path to the end of the substep leaves the sphere detection covered for it this step.</summary>
+    private bool LeavesReach(int i)
+    {
+        Vector3 end = _x[i] + _chord[i] * (float)(_h - _t[i]);
+        return Vector3.DistanceSquared(end, _stepStart[i]) > _reach[i] * _reach[i];
+    }
+
+    /// <summary>
+    /// Grows body i's sphere to cover its path for the rest of the step and adds a contact for every body and plane
+    /// it may now reach that has none yet (brute force over the world: this is rare).
+    /// </summary>
+    private void Search(StepContext step, int i, float stepTimeLeft)
+    {
+        Searches++;
+        ReadOnlySpan<RigidBody> bodies = step.Bodies;
+        CollisionData contacts = step.Contacts;
+        RigidBody body = bodies[i];
+        Vector3 end = _x[i] + _chord[i] * (float)(_h - _t[i]);
+        float speed = MathF.Max(_chord[i].Length(), (_u[i] + _a[i] * (float)(_h - _t[i])).Length());
+        _reach[i] = MathF.Max(2 * _reach[i], Vector3.Distance(end, _stepStart[i]) + speed * stepTimeLeft);
+        EnsurePairs(contacts);
+        for (int j = 0; j < bodies.Length; j++)
+        {
+            RigidBody other = bodies[j];
+            if (j == i || (!body.IsDynamic && !other.IsDynamic))
+            {
+                continue;
+            }
+
+            float reach = body.radius + _reach[i] + other.radius + _reach[j];
+            if (Vector3.DistanceSquared(_stepStart[i], _stepStart[j]) >= reach * reach)
+            {
+                continue;
+            }
+
+            RigidBody first = i < j ? body : other, second = i < j ? other : body;
+            if (!PairFilter.Allows(first, second) || !_pairs.Add(Contact.PairKey(first.Id, second.Id)))
+            {
+                continue; // filtered or sensor pairs never become contacts; others may have one already
+            }
+
+            float penetration = ContactGeometry.CirclePenetration(first.position, first.radius, second.position, second.radius, out Vector3 normal);
+            AddContact(contacts, new Contact(first, second, first.position - normal * (first.radius - 0.5f * penetration), normal, penetration));
+        }
+
+        if (!body.IsDynamic)
+        {
+            return;
+        }
+
+        ReadOnlySpan<StaticPlane> planes = step.Planes;
+        for (int p = 0; p < planes.Length; p++)
+        {
+            if (planes[p].DistanceTo(_stepStart[i]) - body.radius < _reach[i] &&
+                _pairs.Add(Contact.PlaneKey(body.Id, p)) &&
+                ContactGeometry.TryCollide(body, planes[p], p, step.World.Ground, float.PositiveInfinity, 0f, out Contact contact))
+            {
+                AddContact(contacts, contact);
+            }
+        }
+    }
+
+    private void AddContact(CollisionData contacts, in Contact contact)
+    {
+        contacts.Add(contact);
+        int k = contacts.Count - 1;
+        EnsureContacts(contacts.Count);
+        Link(k, contact.BodyA.index, contact.BodyB.index);
+        _limit[k] = DepthLimit(contacts[k]);
+        Predict(contacts, k);
+    }
+
+    private void EnsurePairs(CollisionData contacts)
+    {
+        if (_pairsReady)
+        {
+            return;
+        }
+
+        _pairs.Reset(contacts.Count + 16);
+        foreach (ref readonly Contact contact in contacts.Contacts)
+        {
+            _pairs.Add(contact.Key);
+        }
+
+        _pairsReady = true;
+    }
+}
