@@ -212,7 +212,12 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
     /// <summary>Forgets the stored impulses of every world (e.g. after teleporting bodies).</summary>
     public void ResetWarmStart()
     {
-        _caches.Clear();
+        // Emptied in place, not dropped: a world that steps on keeps its buffers and allocates nothing.
+        foreach (var entry in _caches)
+        {
+            entry.Value.Clear();
+        }
+
         _cache.Clear();
     }
 
