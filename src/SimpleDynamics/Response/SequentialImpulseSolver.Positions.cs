@@ -29,17 +29,15 @@ public sealed partial class SequentialImpulseSolver
             }
         }
 
-        if (_gravity != Vector3.Zero)
+        // A last sweep removes the whole depth beyond the slop: under gravity, contacts that carry weight (normal
+        // within about 45° of vertical) propagate the shock bottom-up; every other contact, and every contact without
+        // gravity, is corrected in full, split by inverse mass.
+        float gravityLength = _gravity.Length();
+        for (int k = 0; k < count; k++)
         {
-            float gravityLength = _gravity.Length();
-            for (int k = 0; k < count; k++)
-            {
-                // Contacts that carry weight (normal within about 45° of vertical) propagate the shock; the others
-                // are corrected in full, split by inverse mass.
-                ref ContactConstraint c = ref _constraints[k];
-                bool carriesWeight = MathF.Abs(Vector3.Dot(c.Normal, _gravity)) > 0.7f * gravityLength;
-                CorrectPosition(ref c, shock: carriesWeight, factor: 1f);
-            }
+            ref ContactConstraint c = ref _constraints[k];
+            bool carriesWeight = gravityLength > 0 && MathF.Abs(Vector3.Dot(c.Normal, _gravity)) > 0.7f * gravityLength;
+            CorrectPosition(ref c, shock: carriesWeight, factor: 1f);
         }
 
         for (int i = 0; i < bodies.Length; i++)
