@@ -47,6 +47,8 @@ internal sealed partial class ImpactStepper
         Buffers.EnsureCapacity(ref _u, n);
         Buffers.EnsureCapacity(ref _a, n);
         Buffers.EnsureCapacity(ref _chord, n);
+        Buffers.EnsureCapacity(ref _substepStart, n);
+        Buffers.EnsureCapacity(ref _startChord, n);
         Buffers.EnsureCapacity(ref _t, n);
         Buffers.EnsureCapacity(ref _version, n);
         Buffers.EnsureCapacity(ref _impacts, n);

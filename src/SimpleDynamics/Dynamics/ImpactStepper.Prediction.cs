@@ -10,8 +10,8 @@ namespace SimpleDynamics;
 internal sealed partial class ImpactStepper
 {
     /// <summary>
-    /// The depth at which a pair collides this substep: 0 (touching) if it is apart now, else its present depth
-    /// plus <see cref="DepthTolerance"/> of the smaller radius (<see cref="HeldDepthTolerance"/> if a body is held by
+    /// The depth at which a pair collides this substep: 0 (touching) if it is apart at the start of the substep, else
+    /// its depth then plus <see cref="DepthTolerance"/> of the smaller radius (<see cref="HeldDepthTolerance"/> if a body is held by
     /// resting contacts).
     /// </summary>
     private float DepthLimit(in Contact contact)
@@ -22,12 +22,12 @@ internal sealed partial class ImpactStepper
         bool held = _held[a.index];
         if (contact.IsPlaneContact)
         {
-            penetration = ContactGeometry.PlanePenetration(_x[a.index], a.radius, contact.Normal, contact.PlaneOffset);
+            penetration = ContactGeometry.PlanePenetration(_substepStart[a.index], a.radius, contact.Normal, contact.PlaneOffset);
         }
         else
         {
             RigidBody b = contact.BodyB;
-            penetration = ContactGeometry.CirclePenetration(_x[a.index], a.radius, _x[b.index], b.radius, out _);
+            penetration = ContactGeometry.CirclePenetration(_substepStart[a.index], a.radius, _substepStart[b.index], b.radius, out _);
             smaller = MathF.Min(smaller, b.radius);
             held |= _held[b.index];
         }
@@ -39,8 +39,8 @@ internal sealed partial class ImpactStepper
 
         // A held pair creeping slower than the tolerance per substep is the responder's; one closing faster collides now.
         float tolerance = (held ? HeldDepthTolerance : DepthTolerance) * smaller;
-        Vector3 chordB = contact.IsPlaneContact ? Vector3.Zero : _chord[contact.BodyB.index];
-        float closing = -Vector3.Dot(_chord[a.index] - chordB, contact.Normal);
+        Vector3 chordB = contact.IsPlaneContact ? Vector3.Zero : _startChord[contact.BodyB.index];
+        float closing = -Vector3.Dot(_startChord[a.index] - chordB, contact.Normal);
         return closing * _h > tolerance ? penetration : penetration + tolerance;
     }
 
@@ -49,11 +49,43 @@ internal sealed partial class ImpactStepper
     {
         ref Contact contact = ref contacts[k];
         int a = contact.BodyA.index, b = contact.BodyB.index;
+        if (Separating(contact, a, b))
+        {
+            return; // most contacts of a resting pile: no impact this substep, and no need to measure them
+        }
+
+        if (float.IsNaN(_limit[k]))
+        {
+            _limit[k] = DepthLimit(contact); // from the substep's start, worked out only for pairs that close
+        }
+
         double time = b < 0 ? PlaneImpactTime(contact, a, _limit[k]) : PairImpactTime(contact, a, b, _limit[k]);
         if (time <= _h)
         {
             _queue.Push(time, k, _version[a], b >= 0 ? _version[b] : 0);
         }
+    }
+
+    /// <summary>
+    /// Whether the pair's distance cannot fall during the rest of the substep: along straight chords the squared
+    /// distance |d + v s|² is convex in s, so it never falls if it does not fall now (d · v ≥ 0).
+    /// </summary>
+    private bool Separating(in Contact contact, int a, int b)
+    {
+        if (b < 0)
+        {
+            return Vector3.Dot(contact.Normal, _chord[a]) >= 0;
+        }
+
+        Vector3 relative = _chord[a] - _chord[b];
+        if (relative == Vector3.Zero)
+        {
+            return true;
+        }
+
+        double t0 = Math.Max(_t[a], _t[b]);
+        Vector3 d = _x[a] + _chord[a] * (float)(t0 - _t[a]) - (_x[b] + _chord[b] * (float)(t0 - _t[b]));
+        return Vector3.Dot(d, relative) >= 0;
     }
 
     private void PredictAround(CollisionData contacts, int body)

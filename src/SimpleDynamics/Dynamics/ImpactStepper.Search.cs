@@ -77,7 +77,7 @@ internal sealed partial class ImpactStepper
         int k = contacts.Count - 1;
         EnsureContacts(contacts.Count);
         Link(k, contact.BodyA.index, contact.BodyB.index);
-        _limit[k] = DepthLimit(contacts[k]);
+        _limit[k] = float.NaN;
         Predict(contacts, k);
     }
 

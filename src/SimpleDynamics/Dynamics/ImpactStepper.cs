@@ -69,6 +69,8 @@ internal sealed partial class ImpactStepper
     private Vector3[] _u = new Vector3[16];
     private Vector3[] _a = new Vector3[16];
     private Vector3[] _chord = new Vector3[16];
+    private Vector3[] _substepStart = new Vector3[16];
+    private Vector3[] _startChord = new Vector3[16];
     private double[] _t = new double[16];
     private int[] _version = new int[16];
     private int[] _impacts = new int[16];
@@ -111,23 +113,15 @@ internal sealed partial class ImpactStepper
         Searches = 0;
     }
 
-    /// <summary>Keeps each body's velocity from before this substep's gravity and forces: v₀ of the motion.</summary>
-    public void BeginSubstep(ReadOnlySpan<RigidBody> bodies)
-    {
-        for (int i = 0; i < bodies.Length; i++)
-        {
-            _startVelocity[i] = bodies[i].linearVelocity;
-        }
-    }
+    /// <summary>
+    /// Where <see cref="World.Step"/>'s velocity integration writes each body's free flight in the substep: its
+    /// velocity before gravity and forces (v₀ of the motion, <see cref="StartVelocities"/>) and after them, before the
+    /// responder's resting contacts (<see cref="ForcedVelocities"/>).
+    /// </summary>
+    public Span<Vector3> StartVelocities => _startVelocity;
 
-    /// <summary>Keeps each body's velocity after gravity and forces, before the responder's resting contacts.</summary>
-    public void AfterForces(ReadOnlySpan<RigidBody> bodies)
-    {
-        for (int i = 0; i < bodies.Length; i++)
-        {
-            _forcedVelocity[i] = bodies[i].linearVelocity;
-        }
-    }
+    /// <inheritdoc cref="StartVelocities"/>
+    public Span<Vector3> ForcedVelocities => _forcedVelocity;
 
     /// <summary>Moves every body through the substep of length <paramref name="h"/>, answering impacts on the way.</summary>
     public void Move(StepContext step, ICollisionResponder responder, float h, float stepTimeLeft)
@@ -164,13 +158,16 @@ internal sealed partial class ImpactStepper
             {
                 _u[i] = _a[i] = _chord[i] = Vector3.Zero;
             }
+
+            _substepStart[i] = _x[i];
+            _startChord[i] = _chord[i];
         }
 
         LinkContacts(contacts, n);
         _queue.Clear();
         for (int k = 0; k < contacts.Count; k++)
         {
-            _limit[k] = DepthLimit(contacts[k]);
+            _limit[k] = float.NaN;
             Predict(contacts, k);
         }
 

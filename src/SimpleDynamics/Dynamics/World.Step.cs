@@ -63,9 +63,7 @@ public sealed partial class World
             for (int substep = 0; substep < _substeps; substep++)
             {
                 step.EnterSubstep(substep);
-                _impacts.BeginSubstep(BodySpan);
                 IntegrateVelocities(h);
-                _impacts.AfterForces(BodySpan);
                 Run(step, StepStage.SolveVelocities);
                 _impacts.Move(step, Responder, h, (_substeps - substep) * h);
                 MeasureContacts();
@@ -136,17 +134,24 @@ public sealed partial class World
     /// <summary>Velocity half of semi-implicit Euler: v += (g + F/m) h, ω += I_w⁻¹ τ h.</summary>
     /// <remarks>
     /// The gyroscopic term ω × (I ω) is left out, as in most game engines; it is zero for spheres and discs,
-    /// the shapes this library collides.
+    /// the shapes this library collides. The impact pass is given each body's velocity before and after: within the
+    /// substep the body moves from one to the other at a uniform rate, exactly as free flight under gravity does.
     /// </remarks>
     private void IntegrateVelocities(float h)
     {
-        foreach (RigidBody body in BodySpan)
+        ReadOnlySpan<RigidBody> bodies = BodySpan;
+        Span<Vector3> before = _impacts.StartVelocities, after = _impacts.ForcedVelocities;
+        for (int i = 0; i < bodies.Length; i++)
         {
+            RigidBody body = bodies[i];
+            before[i] = body.linearVelocity;
             if (body.IsDynamic)
             {
                 body.linearVelocity += (Gravity + body.force * body.inverseMass) * h;
                 body.angularVelocity += body.inverseInertiaWorld.Transform(body.torque) * h;
             }
+
+            after[i] = body.linearVelocity;
         }
     }
 
