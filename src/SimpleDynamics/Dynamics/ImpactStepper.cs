@@ -29,9 +29,11 @@ namespace SimpleDynamics;
 /// still approach is stopped along the normal (an inelastic push through both centres), whatever the responder did.
 /// A body whose path leaves the sphere that detection covered for it (it was knocked into motion faster than it
 /// moved at the start of the step) is looked up again against every body and plane, so it is caught by what lies in
-/// its path in the same step. If a substep needs more than a generous number of impacts (an inelastic collapse,
-/// where impacts come ever faster), the remaining motion of that substep is dropped: bodies stay where they are,
-/// with their velocities, rather than pass through each other.</para>
+/// its path in the same step. A body that needs more than a generous number of impacts in one substep (an inelastic
+/// collapse, where impacts come ever faster, or a jam) stands still for the rest of it, and at its end the jammed
+/// cluster is made to move as one (an inelastic push along each touching line of centres); if the whole substep
+/// needs too many, its remaining motion is dropped. Either way bodies stay where they are rather than pass through
+/// each other.</para>
 /// <para><b>Conservation.</b> The normal of an impact is the current line of centres and both impulses act at one
 /// point, so every impact conserves linear and angular momentum about any point, to float rounding.</para>
 /// </remarks>
@@ -50,10 +52,13 @@ internal sealed partial class ImpactStepper
     /// Impacts one body may take part in during one substep with the responder's answer. A dense cluster hit hard can
     /// otherwise need ever more impacts, ever closer together (inelastic collapse). Past them, an impact only stops
     /// the pair's approach (ε = 0, which conserves momentum and angular momentum and loses energy) and both bodies
-    /// stand still for the rest of the substep, keeping their velocities for the next one: nothing passes through
-    /// anything, and the work per substep is bounded.
+    /// stand still for the rest of the substep, and the cluster they jam is settled at its end (see SettleJams):
+    /// nothing passes through anything, and the work per substep is bounded.
     /// </summary>
     public const int ImpactsPerBody = 32;
+
+    /// <summary>Sweeps over the contacts of bodies that used up their impacts (see SettleJams).</summary>
+    private const int JamSweeps = 8;
 
     /// <summary>
     /// A pair closes only if its closing speed exceeds this fraction of its speeds: a pair just answered is left
@@ -81,6 +86,7 @@ internal sealed partial class ImpactStepper
     private readonly EventQueue _queue = new();
     private readonly PairKeySet _pairs = new();
     private bool _pairsReady;
+    private bool _jammed;
     private double _h;
 
     /// <summary>Impacts answered in the last step.</summary>
@@ -231,6 +237,62 @@ internal sealed partial class ImpactStepper
                 bodies[i].linearVelocity = _u[i];
             }
         }
+
+        if (_jammed)
+        {
+            SettleJams(contacts, step.Planes);
+        }
+    }
+
+    /// <summary>
+    /// A body that used up its impacts was held where it stood, but kept its velocity: left so, it would drive into its
+    /// neighbours again in the next substep, gain speed from gravity while it cannot move, and use up its impacts
+    /// again (a pile stepped with one long substep did this, its balls reaching 1 m/s while standing still). So the
+    /// touching contacts of such bodies are swept a few times (Gauss–Seidel), each pair's approach along its line of
+    /// centres stopped by an inelastic push: the jammed cluster ends the substep moving as one, with linear and
+    /// angular momentum kept and kinetic energy lost, as the inelastic collapse it is.
+    /// </summary>
+    private void SettleJams(CollisionData contacts, ReadOnlySpan<StaticPlane> planes)
+    {
+        for (int sweep = 0; sweep < JamSweeps; sweep++)
+        {
+            bool pushed = false;
+            for (int k = 0; k < contacts.Count; k++)
+            {
+                ref Contact contact = ref contacts[k];
+                int a = contact.BodyA.index, b = contact.BodyB.index;
+                if (_impacts[a] < ImpactsPerBody && (b < 0 || _impacts[b] < ImpactsPerBody))
+                {
+                    continue;
+                }
+
+                Measure(ref contact, planes);
+                float smaller = b < 0 ? contact.BodyA.radius : MathF.Min(contact.BodyA.radius, contact.BodyB.radius);
+                if (contact.Penetration < -HeldDepthTolerance * smaller)
+                {
+                    continue; // apart: not part of the jam
+                }
+
+                if (StopApproach(ref contact, a, b))
+                {
+                    // A body pushed by the jam joins it: its own contacts are swept too, down to the ground.
+                    _impacts[a] = ImpactsPerBody;
+                    if (b >= 0)
+                    {
+                        _impacts[b] = ImpactsPerBody;
+                    }
+
+                    pushed = true;
+                }
+            }
+
+            if (!pushed)
+            {
+                break;
+            }
+        }
+
+        _jammed = false;
     }
 
     /// <summary>
@@ -262,7 +324,7 @@ internal sealed partial class ImpactStepper
 
         if (exhausted)
         {
-            StopApproach(contact, a, b);
+            StopApproach(ref contact, a, b);
             HoldStill(a);
             if (b >= 0)
             {
@@ -285,7 +347,7 @@ internal sealed partial class ImpactStepper
             _u[b] = bodyB.linearVelocity;
         }
 
-        StopApproach(contact, a, b);
+        StopApproach(ref contact, a, b);
         _chord[a] = _u[a] + 0.5f * (float)(_h - _t[a]) * _a[a];
         if (b >= 0)
         {
@@ -296,6 +358,7 @@ internal sealed partial class ImpactStepper
     /// <summary>A body that has used up its impacts stays where it is for the rest of the substep.</summary>
     private void HoldStill(int i)
     {
+        _jammed = true;
         _chord[i] = Vector3.Zero;
         _a[i] = Vector3.Zero;
         _impacts[i] = ImpactsPerBody;
@@ -304,9 +367,10 @@ internal sealed partial class ImpactStepper
     /// <summary>
     /// If the centres still approach along the normal for the rest of the substep, push them apart just enough that
     /// they do not (an inelastic impulse through both centres: it conserves momentum and angular momentum and
-    /// removes kinetic energy). The responder's answer stands whenever it already separates the pair.
+    /// removes kinetic energy). The responder's answer stands whenever it already separates the pair. Returns whether
+    /// it pushed.
     /// </summary>
-    private void StopApproach(in Contact contact, int a, int b)
+    private bool StopApproach(ref Contact contact, int a, int b)
     {
         float inverseMassA = contact.BodyA.inverseMass, inverseMassB = contact.BodyB.inverseMass;
         float inverseMassSum = inverseMassA + inverseMassB;
@@ -316,10 +380,11 @@ internal sealed partial class ImpactStepper
         float closing = Vector3.Dot(chordA - chordB, n);
         if (closing >= 0 || inverseMassSum == 0)
         {
-            return;
+            return false;
         }
 
         float impulse = -closing / inverseMassSum;
+        contact.NormalImpulse += impulse;
         _u[a] += impulse * inverseMassA * n;
         if (b >= 0)
         {
@@ -331,6 +396,8 @@ internal sealed partial class ImpactStepper
         {
             contact.BodyB.linearVelocity = _u[b];
         }
+
+        return true;
     }
 
     /// <summary>Measures a contact at the bodies' current positions: normal along the line of centres, point, depth.</summary>

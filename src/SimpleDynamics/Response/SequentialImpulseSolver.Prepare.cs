@@ -141,14 +141,16 @@ public sealed partial class SequentialImpulseSolver
     /// <summary>
     /// Measures every contact at the start of a substep: the normal along the current line of centres (or the
     /// plane's), tangents, lever arms r = p − c (eq. 16), the spins I⁻¹ (r × t) a unit friction impulse causes (eq. 15)
-    /// and the effective masses. A contact is solved here if it touches, or all but touches (a gap within
-    /// <see cref="Slop"/>, as the position pass leaves a pile), and approaches no faster than
-    /// <see cref="RestitutionThreshold"/>; one that is apart or colliding is left to the impact pass, and its
-    /// accumulated impulses are dropped.
+    /// and the effective masses. A contact is solved here if it touches, or pushed (in the last substep or at an impact
+    /// of this step) and is apart by
+    /// no more than <see cref="Slop"/> (as the position pass leaves a pile), and approaches no faster than
+    /// <see cref="RestitutionThreshold"/>. Any other is left to the impact pass, which answers it when it touches, not
+    /// before (a slow ball that comes within the slop of the ground is not stopped in mid-air), and its accumulated
+    /// impulses are dropped.
     /// </summary>
-    private void MeasureConstraints(int count)
+    private void MeasureConstraints(ReadOnlySpan<Contact> contacts)
     {
-        for (int k = 0; k < count; k++)
+        for (int k = 0; k < contacts.Length; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
             ref VelocityState a = ref _bodies[c.A];
@@ -168,7 +170,8 @@ public sealed partial class SequentialImpulseSolver
             c.RA = point - positionA;
             c.RB = point - _positions[c.B];
             float normalVelocity = Vector3.Dot(ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB), c.Normal);
-            c.Active = penetration >= -_slop && normalVelocity >= -_restitutionThreshold;
+            bool pushed = c.NormalImpulse > 0 || contacts[k].NormalImpulse > 0; // in the last substep, or by an impact of this step
+            c.Active = (penetration >= 0 || (penetration >= -_slop && pushed)) && normalVelocity >= -_restitutionThreshold;
             c.AIsUpper = c.B == 0 || Vector3.Dot(positionA - _positions[c.B], _gravity) <= 0;
             if (!c.Active)
             {

@@ -249,7 +249,7 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
         Span<Contact> contacts = step.Contacts.Contacts;
         PrepareConstraints(contacts); // any the impact pass added during the last substep
         GatherState(step.Bodies);
-        MeasureConstraints(contacts.Length);
+        MeasureConstraints(contacts);
         WarmStart(contacts.Length);
         Sweeps(contacts.Length);
         if (step.Gravity != Vector3.Zero)
