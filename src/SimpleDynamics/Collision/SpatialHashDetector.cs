@@ -231,7 +231,7 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
                         continue; // this pair is reported in another cell
                     }
 
-                    if (ContactGeometry.TryCollide(bodies[i], bodies[j], margin, lookahead, out Contact contact))
+                    if (ContactGeometry.Unchecked.TryCollide(bodies[i], bodies[j], margin, lookahead, out Contact contact))
                     {
                         collisions.Add(contact);
                     }
@@ -254,7 +254,7 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
                 }
 
                 int a = Math.Min(big, j), b = Math.Max(big, j);
-                if (ContactGeometry.TryCollide(bodies[a], bodies[b], margin, lookahead, out Contact contact))
+                if (ContactGeometry.Unchecked.TryCollide(bodies[a], bodies[b], margin, lookahead, out Contact contact))
                 {
                     collisions.Add(contact);
                 }

@@ -22,12 +22,12 @@ internal sealed partial class ImpactStepper
         bool held = _held[a.index];
         if (contact.IsPlaneContact)
         {
-            penetration = ContactGeometry.PlanePenetration(_x[a.index], a.radius, contact.Normal, contact.PlaneOffset);
+            penetration = ContactGeometry.Unchecked.PlanePenetration(_x[a.index], a.radius, contact.Normal, contact.PlaneOffset);
         }
         else
         {
             RigidBody b = contact.BodyB;
-            penetration = ContactGeometry.CirclePenetration(_x[a.index], a.radius, _x[b.index], b.radius, out _);
+            penetration = ContactGeometry.Unchecked.CirclePenetration(_x[a.index], a.radius, _x[b.index], b.radius, out _);
             smaller = MathF.Min(smaller, b.radius);
             held |= _held[b.index];
         }

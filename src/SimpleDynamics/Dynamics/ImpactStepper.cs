@@ -347,11 +347,11 @@ internal sealed partial class ImpactStepper
         {
             StaticPlane plane = planes[contact.PlaneIndex];
             contact.Normal = plane.Normal;
-            contact.Penetration = ContactGeometry.PlanePenetration(a.position, a.radius, plane.Normal, plane.Offset);
+            contact.Penetration = ContactGeometry.Unchecked.PlanePenetration(a.position, a.radius, plane.Normal, plane.Offset);
         }
         else
         {
-            contact.Penetration = ContactGeometry.CirclePenetration(a.position, a.radius, contact.BodyB.position, contact.BodyB.radius, out contact.Normal);
+            contact.Penetration = ContactGeometry.Unchecked.CirclePenetration(a.position, a.radius, contact.BodyB.position, contact.BodyB.radius, out contact.Normal);
         }
 
         contact.Point = a.position - contact.Normal * (a.radius - 0.5f * contact.Penetration);

@@ -125,7 +125,7 @@ public sealed partial class World
         {
             for (int p = 0; p < planes.Length; p++)
             {
-                if (ContactGeometry.TryCollide(body, planes[p], p, Ground, margin, dt, out Contact contact))
+                if (ContactGeometry.Unchecked.TryCollide(body, planes[p], p, Ground, margin, dt, out Contact contact))
                 {
                     Collisions.Add(contact);
                 }
@@ -156,7 +156,7 @@ public sealed partial class World
     {
         foreach (ref Contact contact in Collisions.Contacts)
         {
-            ContactGeometry.Refresh(ref contact);
+            ContactGeometry.Unchecked.Refresh(ref contact);
         }
     }
 

@@ -157,11 +157,11 @@ public sealed partial class SequentialImpulseSolver
             float penetration;
             if (c.IsPlaneContact)
             {
-                penetration = ContactGeometry.PlanePenetration(positionA, c.RadiusA, c.Normal = PlaneNormal(k), c.PlaneOffset);
+                penetration = ContactGeometry.Unchecked.PlanePenetration(positionA, c.RadiusA, c.Normal = PlaneNormal(k), c.PlaneOffset);
             }
             else
             {
-                penetration = ContactGeometry.CirclePenetration(positionA, c.RadiusA, _positions[c.B], c.RadiusB, out c.Normal);
+                penetration = ContactGeometry.Unchecked.CirclePenetration(positionA, c.RadiusA, _positions[c.B], c.RadiusB, out c.Normal);
             }
 
             Vector3 point = positionA - c.Normal * (c.RadiusA - 0.5f * penetration);
