@@ -73,7 +73,7 @@ internal sealed class ContactCache
         private int _mask = InitialSlots - 1;
         private int _count;
 
-        /// <summary>The contacts the table holds at most half full.</summary>
+        /// <summary>The contacts a new table holds (half its slots).</summary>
         public const int InitialRoom = InitialSlots / 2;
 
         /// <summary>The contacts it holds before it grows: half its slots.</summary>
