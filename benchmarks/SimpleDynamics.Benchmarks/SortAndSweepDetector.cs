@@ -62,7 +62,7 @@ public sealed class SortAndSweepDetector : ICollisionDetector
 
                 // The interface's order: A is the body earlier in the given list.
                 int i = Math.Min(first.Body, second.Body), j = Math.Max(first.Body, second.Body);
-                if (ContactGeometry.TryCollide(bodies[i], bodies[j], margin, lookahead, out Contact contact))
+                if (ContactGeometry.Unchecked.TryCollide(bodies[i], bodies[j], margin, lookahead, out Contact contact))
                 {
                     collisions.Add(contact);
                 }

@@ -76,6 +76,14 @@ internal static partial class Guard
         }
     }
 
+    public static void Finite(double value, string paramName)
+    {
+        if (!double.IsFinite(value))
+        {
+            throw new ArgumentOutOfRangeException(paramName, value, $"{paramName} must be a finite number.");
+        }
+    }
+
     public static void NotNull(object? value, string paramName)
     {
         if (value is null)

@@ -20,7 +20,7 @@ public sealed class BruteForceDetector : ICollisionDetector
         {
             for (int j = i + 1; j < bodies.Length; j++)
             {
-                if (ContactGeometry.TryCollide(bodies[i], bodies[j], margin, lookahead, out Contact contact))
+                if (ContactGeometry.Unchecked.TryCollide(bodies[i], bodies[j], margin, lookahead, out Contact contact))
                 {
                     collisions.Add(contact);
                 }

@@ -9,15 +9,18 @@ namespace SimpleDynamics.Collision;
 /// </summary>
 public sealed class CollisionData
 {
+    private readonly int _initialCapacity;
     private Contact[] _contacts;
     private int _count;
     private bool _bodiesRemoved;
+    private ShrinkPolicy _room;
 
     /// <summary>Creates an empty sink with room for <paramref name="capacity"/> contacts.</summary>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="capacity"/> is less than 1.</exception>
     public CollisionData(int capacity = 64)
     {
         Guard.AtLeast(capacity, 1, nameof(capacity));
+        _initialCapacity = capacity;
         _contacts = new Contact[capacity];
     }
 
@@ -98,6 +101,12 @@ public sealed class CollisionData
         DropContactsOfRemovedBodies();
         Buffers.Shrink(ref _contacts, Math.Max(_count, 1));
     }
+
+    /// <summary>
+    /// Called by <see cref="Owner"/> at the end of each step: the storage shrinks once it has long been far larger
+    /// than the steps need (<see cref="ShrinkPolicy"/>), keeping the contacts.
+    /// </summary>
+    internal void ShrinkIfIdle() => Buffers.ShrinkIfIdle(ref _contacts, Count, ref _room, _initialCapacity);
 
     /// <summary>
     /// Called by <see cref="Owner"/> when it removes a body: the contacts naming it are dropped before the

@@ -19,12 +19,16 @@ namespace SimpleDynamics.Collision;
 /// </remarks>
 public sealed class ContactEvents
 {
-    private ContactEvent[] _begin = new ContactEvent[16];
-    private ContactEvent[] _end = new ContactEvent[16];
-    private HitEvent[] _hits = new HitEvent[16];
-    private SensorEvent[] _sensorBegin = new SensorEvent[8];
-    private SensorEvent[] _sensorEnd = new SensorEvent[8];
+    private const int InitialCapacity = 16;
+    private const int InitialSensorCapacity = 8;
+
+    private ContactEvent[] _begin = new ContactEvent[InitialCapacity];
+    private ContactEvent[] _end = new ContactEvent[InitialCapacity];
+    private HitEvent[] _hits = new HitEvent[InitialCapacity];
+    private SensorEvent[] _sensorBegin = new SensorEvent[InitialSensorCapacity];
+    private SensorEvent[] _sensorEnd = new SensorEvent[InitialSensorCapacity];
     private int _beginCount, _endCount, _hitCount, _sensorBeginCount, _sensorEndCount;
+    private ShrinkPolicy _beginRoom, _endRoom, _hitRoom, _sensorBeginRoom, _sensorEndRoom;
 
     internal ContactEvents()
     {
@@ -67,6 +71,36 @@ public sealed class ContactEvents
         Array.Clear(_sensorBegin, 0, _sensorBeginCount);
         Array.Clear(_sensorEnd, 0, _sensorEndCount);
         _beginCount = _endCount = _hitCount = _sensorBeginCount = _sensorEndCount = 0;
+    }
+
+    /// <summary>
+    /// Applies the <see cref="ShrinkPolicy"/> to the event lists after each step; the events are kept. A list's use is
+    /// the pairs that could fill it (every touching pair may begin, end or strike in one step, every overlap may begin
+    /// or end), not the few events a resting pile happens to make: so a list stays ready for a knock on the pile, and
+    /// shrinks only when the scene does.
+    /// </summary>
+    internal void ShrinkIfIdle()
+    {
+        int touching = Math.Max(Touch.Count, _endCount), overlaps = Math.Max(Sensor.Count, _sensorEndCount);
+        Buffers.ShrinkIfIdle(ref _begin, Math.Max(_beginCount, touching), ref _beginRoom, InitialCapacity);
+        Buffers.ShrinkIfIdle(ref _end, touching, ref _endRoom, InitialCapacity);
+        Buffers.ShrinkIfIdle(ref _hits, Math.Max(_hitCount, touching), ref _hitRoom, InitialCapacity);
+        Buffers.ShrinkIfIdle(ref _sensorBegin, Math.Max(_sensorBeginCount, overlaps), ref _sensorBeginRoom, InitialSensorCapacity);
+        Buffers.ShrinkIfIdle(ref _sensorEnd, overlaps, ref _sensorEndRoom, InitialSensorCapacity);
+        Touch.ShrinkIfIdle();
+        Sensor.ShrinkIfIdle();
+    }
+
+    /// <summary>Gives back all the spare room of the event lists; the events are kept.</summary>
+    internal void TrimExcess()
+    {
+        Buffers.Shrink(ref _begin, Math.Max(_beginCount, InitialCapacity));
+        Buffers.Shrink(ref _end, Math.Max(_endCount, InitialCapacity));
+        Buffers.Shrink(ref _hits, Math.Max(_hitCount, InitialCapacity));
+        Buffers.Shrink(ref _sensorBegin, Math.Max(_sensorBeginCount, InitialSensorCapacity));
+        Buffers.Shrink(ref _sensorEnd, Math.Max(_sensorEndCount, InitialSensorCapacity));
+        Touch.TrimExcess();
+        Sensor.TrimExcess();
     }
 
     internal void AddBegin(in ContactEvent e) => Append(ref _begin, ref _beginCount, e);

@@ -8,36 +8,44 @@ namespace SimpleDynamics.Collision;
 /// The narrow phase for bounding circles/spheres: the exact overlap test and the contact it produces. Every
 /// detector, the position correction and the diagnostics measure penetration with these same functions.
 /// </summary>
-public static class ContactGeometry
+/// <remarks>
+/// These public functions check their arguments (and change nothing when they throw); the library itself calls the
+/// same code without the checks (ContactGeometry.Unchecked.cs), since it calls it per contact and substep.
+/// </remarks>
+public static partial class ContactGeometry
 {
     /// <summary>
     /// Penetration of two circles along the line of centres, r_A + r_B − d, and the unit normal from B to A.
     /// Coincident centres (d below about 1e-6 of the radii) get the defined normal +y, never NaN.
     /// </summary>
+    /// <exception cref="ArgumentException">A centre is not finite.</exception>
+    /// <exception cref="ArgumentOutOfRangeException">A radius is negative or not finite.</exception>
     public static float CirclePenetration(Vector3 centreA, float radiusA, Vector3 centreB, float radiusB, out Vector3 normal)
     {
-        Vector3 delta = centreA - centreB;
-        float distanceSquared = delta.LengthSquared();
-        float radii = radiusA + radiusB;
-        if (distanceSquared <= 1e-12f * radii * radii)
-        {
-            normal = Vector3.UnitY;
-            return radii;
-        }
-
-        float distance = MathF.Sqrt(distanceSquared);
-        normal = delta / distance;
-        return radii - distance;
+        Guard.Finite(centreA, nameof(centreA));
+        Guard.NonNegative(radiusA, nameof(radiusA));
+        Guard.Finite(centreB, nameof(centreB));
+        Guard.NonNegative(radiusB, nameof(radiusB));
+        return Unchecked.CirclePenetration(centreA, radiusA, centreB, radiusB, out normal);
     }
 
     /// <summary>Penetration of a circle into a plane: r − (signed distance of the centre).</summary>
-    public static float PlanePenetration(Vector3 centre, float radius, Vector3 planeNormal, float planeOffset) =>
-        radius - (Vector3.Dot(planeNormal, centre) - planeOffset);
+    /// <exception cref="ArgumentException"><paramref name="centre"/> is not finite, or <paramref name="planeNormal"/> is not a unit vector.</exception>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="radius"/> is negative or not finite, or <paramref name="planeOffset"/> is not finite.</exception>
+    public static float PlanePenetration(Vector3 centre, float radius, Vector3 planeNormal, float planeOffset)
+    {
+        Guard.Finite(centre, nameof(centre));
+        Guard.NonNegative(radius, nameof(radius));
+        Guard.UnitVector(planeNormal, nameof(planeNormal));
+        Guard.Finite(planeOffset, nameof(planeOffset));
+        return Unchecked.PlanePenetration(centre, radius, planeNormal, planeOffset);
+    }
 
     /// <summary>
     /// True when the bounding circles of two bodies overlap (d &lt; r_A + r_B) and the pair can collide (at least
     /// one is dynamic). Fills a contact with A = <paramref name="a"/>, B = <paramref name="b"/>.
     /// </summary>
+    /// <exception cref="ArgumentNullException"><paramref name="a"/> or <paramref name="b"/> is null.</exception>
     public static bool TryCollide(RigidBody a, RigidBody b, out Contact contact) => TryCollide(a, b, 0f, 0f, out contact);
 
     /// <summary>
@@ -49,76 +57,47 @@ public static class ContactGeometry
     /// lookahead 0 this is the overlap test d &lt; r_A + r_B. A reported pair with a gap has a negative
     /// <see cref="Contact.Penetration"/>.
     /// </summary>
+    /// <exception cref="ArgumentNullException"><paramref name="a"/> or <paramref name="b"/> is null.</exception>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="margin"/> or <paramref name="lookahead"/> is negative or not finite.</exception>
     public static bool TryCollide(RigidBody a, RigidBody b, float margin, float lookahead, out Contact contact)
     {
-        contact = default;
-        if (!a.IsDynamic && !b.IsDynamic)
-        {
-            return false; // two infinite masses: nothing to resolve
-        }
-
-        float reach = a.radius + b.radius + margin + lookahead * (a.linearVelocity.Length() + b.linearVelocity.Length());
-        if (Vector3.DistanceSquared(a.position, b.position) >= reach * reach)
-        {
-            return false;
-        }
-
-        if (!PairFilter.Allows(a, b)) return false; // filtered pairs and sensors never become contacts
-        float penetration = CirclePenetration(a.position, a.radius, b.position, b.radius, out Vector3 normal);
-
-        Vector3 point = a.position - normal * (a.radius - 0.5f * penetration);
-        contact = new Contact(a, b, point, normal, penetration);
-        return true;
+        Guard.NotNull(a, nameof(a));
+        Guard.NotNull(b, nameof(b));
+        Guard.NonNegative(margin, nameof(margin));
+        Guard.NonNegative(lookahead, nameof(lookahead));
+        return Unchecked.TryCollide(a, b, margin, lookahead, out contact);
     }
 
     /// <summary>
     /// True when a dynamic body's circle reaches into a plane, or comes within <paramref name="margin"/> plus
     /// the distance it can travel in <paramref name="lookahead"/> seconds; fills the contact (B = ground).
     /// </summary>
+    /// <exception cref="ArgumentNullException"><paramref name="body"/> or <paramref name="ground"/> is null.</exception>
+    /// <exception cref="ArgumentException"><paramref name="plane"/> is uninitialised (<c>default</c>).</exception>
+    /// <exception cref="ArgumentOutOfRangeException"><paramref name="planeIndex"/> is negative, or <paramref name="margin"/> or <paramref name="lookahead"/> is negative or not finite.</exception>
     public static bool TryCollide(RigidBody body, in StaticPlane plane, int planeIndex, RigidBody ground, float margin, float lookahead, out Contact contact)
     {
-        contact = default;
-        if (!body.IsDynamic)
+        Guard.NotNull(body, nameof(body));
+        if (plane.Normal == Vector3.Zero)
         {
-            return false;
+            throw new ArgumentException("The plane is uninitialised; create it with a unit normal.", nameof(plane));
         }
 
-        float penetration = PlanePenetration(body.position, body.radius, plane.Normal, plane.Offset);
-        if (-penetration >= margin + lookahead * body.linearVelocity.Length())
-        {
-            return false;
-        }
-
-        if (!PairFilter.Allows(body, plane, planeIndex)) return false; // filtered pairs and sensors never become contacts
-        Vector3 point = body.position - plane.Normal * (body.radius - 0.5f * penetration);
-        contact = new Contact(body, ground, point, plane.Normal, penetration)
-        {
-            Key = Contact.PlaneKey(body.Id, planeIndex),
-            PlaneIndex = planeIndex,
-            PlaneOffset = plane.Offset,
-            PlaneRestitution = plane.Restitution,
-            PlaneFriction = plane.Friction,
-        };
-        return true;
+        Guard.AtLeast(planeIndex, 0, nameof(planeIndex));
+        Guard.NotNull(ground, nameof(ground));
+        Guard.NonNegative(margin, nameof(margin));
+        Guard.NonNegative(lookahead, nameof(lookahead));
+        return Unchecked.TryCollide(body, plane, planeIndex, ground, margin, lookahead, out contact);
     }
 
     /// <summary>
     /// Measures a contact again at the bodies' current positions: penetration, normal and point. Used after
     /// positions have moved within a step.
     /// </summary>
+    /// <exception cref="ArgumentException">The contact names no bodies (it is <c>default</c>).</exception>
     public static void Refresh(ref Contact contact)
     {
-        RigidBody a = contact.BodyA;
-        if (contact.PlaneIndex >= 0)
-        {
-            contact.Penetration = PlanePenetration(a.position, a.radius, contact.Normal, contact.PlaneOffset);
-        }
-        else
-        {
-            RigidBody b = contact.BodyB;
-            contact.Penetration = CirclePenetration(a.position, a.radius, b.position, b.radius, out contact.Normal);
-        }
-
-        contact.Point = a.position - contact.Normal * (a.radius - 0.5f * contact.Penetration);
+        Guard.ContactBodies(contact, nameof(contact));
+        Unchecked.Refresh(ref contact);
     }
 }

@@ -10,11 +10,14 @@ namespace SimpleDynamics.Collision;
 internal sealed class PairSet<T>
     where T : struct
 {
-    private ulong[] _keys = new ulong[16];
-    private T[] _items = new T[16];
+    private const int InitialCapacity = 16;
+
+    private ulong[] _keys = new ulong[InitialCapacity];
+    private T[] _items = new T[InitialCapacity];
 
     // _slots[h] is 0 when empty, else (index into _keys/_items) + 1. Kept at most half full, so probes are short.
-    private int[] _slots = new int[32];
+    private int[] _slots = new int[2 * InitialCapacity];
+    private ShrinkPolicy _room;
 
     public int Count { get; private set; }
 
@@ -78,6 +81,25 @@ internal sealed class PairSet<T>
         Count = 0;
     }
 
+    /// <summary>Applies the <see cref="ShrinkPolicy"/> once per step to the pairs held now, which are kept.</summary>
+    public void ShrinkIfIdle()
+    {
+        int room = _room.Observe(Count, _items.Length, InitialCapacity);
+        if (room > 0)
+        {
+            Reallocate(room);
+        }
+    }
+
+    /// <summary>Gives back all the spare room, keeping the pairs.</summary>
+    public void TrimExcess()
+    {
+        if (_items.Length > Math.Max(Count, InitialCapacity))
+        {
+            Reallocate(Math.Max(Count, InitialCapacity));
+        }
+    }
+
     /// <summary>The key of a pair of bodies, whichever order they come in.</summary>
     public static ulong BodyPairKey(int idA, int idB) =>
         idA < idB ? ((ulong)(uint)idA << 32) | (uint)idB : ((ulong)(uint)idB << 32) | (uint)idA;
@@ -88,9 +110,29 @@ internal sealed class PairSet<T>
     // Fibonacci hashing: multiply by 2^64/φ and keep the high bits, which mixes the two ids of a key.
     private static int Home(ulong key, int mask) => (int)((key * 0x9E3779B97F4A7C15UL) >> 32) & mask;
 
+    /// <summary>Moves the pairs into arrays of <paramref name="capacity"/> items and a table that holds them half full.</summary>
+    private void Reallocate(int capacity)
+    {
+        Buffers.ShrinkTo(ref _keys, capacity, Count);
+        Buffers.ShrinkTo(ref _items, capacity, Count);
+        int slots = 2 * InitialCapacity;
+        while (slots < 2 * capacity)
+        {
+            slots <<= 1;
+        }
+
+        _slots = new int[slots];
+        Rehash();
+    }
+
     private void Grow()
     {
         _slots = new int[_slots.Length * 2];
+        Rehash();
+    }
+
+    private void Rehash()
+    {
         int mask = _slots.Length - 1;
         for (int i = 0; i < Count; i++)
         {

@@ -20,20 +20,30 @@ internal sealed class QueryGrid
 {
     private const int MaxCellsPerBody = 64;
 
-    private RigidBody[] _bodies = new RigidBody[16];
-    private Cell[] _low = new Cell[16];
-    private Cell[] _high = new Cell[16];
+    private const int InitialBodies = 16;
+    private const int InitialCells = 64;
+    private const int InitialOversized = 4;
+
+    private RigidBody[] _bodies = new RigidBody[InitialBodies];
+    private Cell[] _low = new Cell[InitialBodies];
+    private Cell[] _high = new Cell[InitialBodies];
     private int _count;
-    private int[] _cellStart = new int[65];
-    private int[] _entries = new int[16];
-    private int[] _oversized = new int[4];
+    private int[] _cellStart = new int[InitialCells + 1];
+    private int _cellCount;
+    private int[] _entries = new int[InitialBodies];
+    private int _entryCount;
+    private int[] _oversized = new int[InitialOversized];
     private int _oversizedCount;
-    private int[] _candidates = new int[16];
+    private int[] _candidates = new int[InitialBodies];
     private int _candidateCount;
+    private int _candidatePeak; // the most candidates one query gathered since the last build
 
     // _testedBy[slot] == _query marks a body already gathered by the current query.
-    private int[] _testedBy = new int[16];
+    private int[] _testedBy = new int[InitialBodies];
     private int _query;
+
+    // The ShrinkPolicy, applied at each build (at most once per step).
+    private ShrinkPolicy _bodyRoom, _cellRoom, _entryRoom, _oversizedRoom, _candidateRoom;
 
     private Vector3 _origin;
     private float _cellSize = 1f;
@@ -66,6 +76,8 @@ internal sealed class QueryGrid
         if (_count == 0)
         {
             _nx = _ny = _nz = 0;
+            _cellCount = _entryCount = 0;
+            ShrinkIfIdle();
             return;
         }
 
@@ -136,6 +148,50 @@ internal sealed class QueryGrid
         }
 
         _cellStart[0] = 0;
+        _cellCount = cellCount;
+        _entryCount = entryCount;
+        ShrinkIfIdle();
+    }
+
+    /// <summary>
+    /// Applies the <see cref="ShrinkPolicy"/> after a build, keeping what the queries until the next build read. A build
+    /// happens at most once per step, when the world is first queried (or has sensors), so an unqueried world's grid
+    /// keeps its arrays until <see cref="TrimExcess"/>.
+    /// </summary>
+    private void ShrinkIfIdle()
+    {
+        int room = _bodyRoom.Observe(_count, _bodies.Length, InitialBodies);
+        if (room > 0)
+        {
+            Buffers.ShrinkTo(ref _bodies, room, _count);
+            Buffers.ShrinkTo(ref _low, room, _count);
+            Buffers.ShrinkTo(ref _high, room, _count);
+            Buffers.ShrinkTo(ref _testedBy, room, _count);
+        }
+
+        Buffers.ShrinkIfIdle(ref _cellStart, _cellCount + 1, ref _cellRoom, InitialCells + 1);
+        Buffers.ShrinkIfIdle(ref _entries, _entryCount, ref _entryRoom, InitialBodies);
+        Buffers.ShrinkIfIdle(ref _oversized, _oversizedCount, ref _oversizedRoom, InitialOversized);
+        // A query may gather every body: the candidates' use is the bodies, not what the queries since happened to gather.
+        Buffers.ShrinkIfIdle(ref _candidates, Math.Max(_candidatePeak, _count), ref _candidateRoom, InitialBodies);
+        _candidatePeak = 0;
+    }
+
+    /// <summary>Gives back all the spare room; the grid is built afresh at the next query.</summary>
+    public void TrimExcess()
+    {
+        Array.Clear(_bodies, 0, _count);
+        _count = _cellCount = _entryCount = _oversizedCount = _candidateCount = _candidatePeak = 0;
+        _nx = _ny = _nz = 0;
+        Version = -1;
+        _bodies = new RigidBody[InitialBodies];
+        _low = new Cell[InitialBodies];
+        _high = new Cell[InitialBodies];
+        _testedBy = new int[InitialBodies];
+        _cellStart = new int[InitialCells + 1];
+        _entries = new int[InitialBodies];
+        _oversized = new int[InitialOversized];
+        _candidates = new int[InitialBodies];
     }
 
     /// <summary>Gathers, once each, the bodies whose cells the box [min, max] touches, and the oversized bodies.</summary>
@@ -281,6 +337,7 @@ internal sealed class QueryGrid
 
     private void StartQuery()
     {
+        _candidatePeak = Math.Max(_candidatePeak, _candidateCount);
         _candidateCount = 0;
         if (++_query == int.MaxValue)
         {

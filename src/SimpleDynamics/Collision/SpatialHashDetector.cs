@@ -23,20 +23,27 @@ namespace SimpleDynamics.Collision;
 /// <para><b>Cell size</b> is twice the mean radius, chosen anew every step. A body that would cover more than
 /// <see cref="MaxCellsPerBody"/> cells (a huge ground disc, say) is kept out of the grid and tested against every
 /// body instead.</para>
-/// <para>All working arrays are kept and reused: once warm, a step allocates nothing.</para>
+/// <para>All working arrays are kept and reused: once warm, a step allocates nothing. They shrink when asked
+/// (<see cref="TrimExcess"/>) or once calls have long needed far less than they hold (120 calls using less than a
+/// quarter: see <see cref="World.TrimExcess"/>).</para>
 /// </remarks>
-public sealed class SpatialHashDetector : ICollisionDetector
+public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
 {
     /// <summary>A body covering more cells than this is tested directly against all others.</summary>
     public const int MaxCellsPerBody = 64;
 
     private const int CellLimit = 1 << 20; // cell coordinates are clamped here: far-away bodies share edge cells
 
-    private Bounds[] _bounds = new Bounds[16];
-    private Entry[] _entries = new Entry[16];
-    private int[] _bucketStart = new int[17];
-    private int[] _oversized = new int[4];
+    private const int InitialBodies = 16;
+    private const int InitialBuckets = 16;
+    private const int InitialOversized = 4;
+
+    private Bounds[] _bounds = new Bounds[InitialBodies];
+    private Entry[] _entries = new Entry[InitialBodies];
+    private int[] _bucketStart = new int[InitialBuckets + 1];
+    private int[] _oversized = new int[InitialOversized];
     private int _oversizedCount;
+    private ShrinkPolicy _boundsRoom, _entryRoom, _bucketRoom, _oversizedRoom;
 
     /// <inheritdoc />
     public void FindContacts(ReadOnlySpan<RigidBody> bodies, CollisionData collisions, float margin = 0f, float lookahead = 0f)
@@ -48,6 +55,7 @@ public sealed class SpatialHashDetector : ICollisionDetector
         int n = bodies.Length;
         if (n < 2)
         {
+            ShrinkIfIdle(0, 0, 0);
             return;
         }
 
@@ -57,6 +65,31 @@ public sealed class SpatialHashDetector : ICollisionDetector
         FillBuckets(n, bucketMask);
         FindPairsInBuckets(bodies, bucketMask, collisions, inverseCellSize, margin, lookahead);
         FindPairsWithOversized(bodies, collisions, margin, lookahead);
+        ShrinkIfIdle(n, entryCount, bucketMask + 2);
+    }
+
+    /// <summary>
+    /// Releases the spare room of the working arrays. They hold nothing from one call to the next and are shared by
+    /// every world the detector serves, so all of it goes, whichever <paramref name="world"/> asks.
+    /// <see cref="World.TrimExcess"/> calls it.
+    /// </summary>
+    /// <exception cref="ArgumentNullException"><paramref name="world"/> is null.</exception>
+    public void TrimExcess(World world)
+    {
+        Guard.NotNull(world, nameof(world));
+        Buffers.ShrinkTo(ref _bounds, InitialBodies, 0);
+        Buffers.ShrinkTo(ref _entries, InitialBodies, 0);
+        Buffers.ShrinkTo(ref _bucketStart, InitialBuckets + 1, 0);
+        Buffers.ShrinkTo(ref _oversized, InitialOversized, 0);
+    }
+
+    /// <summary>Applies the <see cref="ShrinkPolicy"/> after each call, one call being one step of a world.</summary>
+    private void ShrinkIfIdle(int bodies, int entries, int bucketStarts)
+    {
+        Buffers.ShrinkIfIdle(ref _bounds, bodies, ref _boundsRoom, InitialBodies);
+        Buffers.ShrinkIfIdle(ref _entries, entries, ref _entryRoom, InitialBodies);
+        Buffers.ShrinkIfIdle(ref _bucketStart, bucketStarts, ref _bucketRoom, InitialBuckets + 1);
+        Buffers.ShrinkIfIdle(ref _oversized, _oversizedCount, ref _oversizedRoom, InitialOversized);
     }
 
     /// <summary>
@@ -198,7 +231,7 @@ public sealed class SpatialHashDetector : ICollisionDetector
                         continue; // this pair is reported in another cell
                     }
 
-                    if (ContactGeometry.TryCollide(bodies[i], bodies[j], margin, lookahead, out Contact contact))
+                    if (ContactGeometry.Unchecked.TryCollide(bodies[i], bodies[j], margin, lookahead, out Contact contact))
                     {
                         collisions.Add(contact);
                     }
@@ -221,7 +254,7 @@ public sealed class SpatialHashDetector : ICollisionDetector
                 }
 
                 int a = Math.Min(big, j), b = Math.Max(big, j);
-                if (ContactGeometry.TryCollide(bodies[a], bodies[b], margin, lookahead, out Contact contact))
+                if (ContactGeometry.Unchecked.TryCollide(bodies[a], bodies[b], margin, lookahead, out Contact contact))
                 {
                     collisions.Add(contact);
                 }

@@ -9,8 +9,12 @@ namespace SimpleDynamics;
 /// </summary>
 internal sealed class EventQueue
 {
-    private Entry[] _heap = new Entry[64];
+    private const int InitialCapacity = 64;
+
+    private Entry[] _heap = new Entry[InitialCapacity];
     private int _count;
+    private int _peak; // the most entries held since the last ShrinkIfIdle: this step's use
+    private ShrinkPolicy _room;
 
     public int Count => _count;
 
@@ -20,6 +24,7 @@ internal sealed class EventQueue
     {
         Buffers.EnsureCapacity(ref _heap, _count + 1);
         int i = _count++;
+        _peak = Math.Max(_peak, _count);
         var entry = new Entry(time, contact, versionA, versionB);
         while (i > 0)
         {
@@ -71,8 +76,19 @@ internal sealed class EventQueue
         return top;
     }
 
-    /// <summary>Gives back memory after a burst of events.</summary>
-    public void TrimExcess() => _heap = new Entry[Math.Max(64, _count)];
+    /// <summary>
+    /// Applies the <see cref="ShrinkPolicy"/> once per step, when the queue is empty. Its use is the step's
+    /// <paramref name="contacts"/> (or more, if it held more): every contact may be queued at the start of a substep, so
+    /// the queue stays ready for that even when a resting pile makes few impacts, and one knock does not grow it again.
+    /// </summary>
+    public void ShrinkIfIdle(int contacts)
+    {
+        Buffers.ShrinkIfIdle(ref _heap, Math.Max(_peak, contacts), ref _room, InitialCapacity);
+        _peak = 0;
+    }
+
+    /// <summary>Gives back memory after a burst of events (between steps, when the queue is empty).</summary>
+    public void TrimExcess() => Buffers.ShrinkTo(ref _heap, Math.Max(InitialCapacity, _count), _count);
 
     public readonly struct Entry
     {

@@ -37,6 +37,43 @@ internal sealed partial class ImpactStepper
         }
     }
 
+    private const int InitialBodies = 16;
+    private const int InitialContacts = 16;
+
+    private ShrinkPolicy _bodyRoom;
+    private ShrinkPolicy _contactRoom;
+
+    /// <summary>
+    /// Applies the <see cref="ShrinkPolicy"/> after a step over <paramref name="bodies"/> bodies and
+    /// <paramref name="contacts"/> contacts. The arrays hold nothing from one step to the next, so nothing is kept.
+    /// </summary>
+    public void ShrinkIfIdle(int bodies, int contacts)
+    {
+        int room = _bodyRoom.Observe(bodies, _stepStart.Length, InitialBodies);
+        if (room > 0)
+        {
+            ShrinkBodies(room);
+        }
+
+        room = _contactRoom.Observe(contacts, _limit.Length, InitialContacts);
+        if (room > 0)
+        {
+            ShrinkContacts(room);
+        }
+
+        _queue.ShrinkIfIdle(contacts);
+        _pairs.ShrinkIfIdle(contacts);
+    }
+
+    /// <summary>Gives back all the spare room (between steps, when the arrays hold nothing).</summary>
+    public void TrimExcess()
+    {
+        ShrinkBodies(InitialBodies);
+        ShrinkContacts(InitialContacts);
+        _queue.TrimExcess();
+        _pairs.TrimExcess();
+    }
+
     private void EnsureBodies(int n)
     {
         Buffers.EnsureCapacity(ref _stepStart, n);
@@ -60,5 +97,30 @@ internal sealed partial class ImpactStepper
     {
         Buffers.EnsureCapacity(ref _next, 2 * count);
         Buffers.EnsureCapacity(ref _limit, count);
+    }
+
+    private void ShrinkBodies(int capacity)
+    {
+        Buffers.ShrinkTo(ref _stepStart, capacity, 0);
+        Buffers.ShrinkTo(ref _reach, capacity, 0);
+        Buffers.ShrinkTo(ref _startVelocity, capacity, 0);
+        Buffers.ShrinkTo(ref _forcedVelocity, capacity, 0);
+        Buffers.ShrinkTo(ref _x, capacity, 0);
+        Buffers.ShrinkTo(ref _u, capacity, 0);
+        Buffers.ShrinkTo(ref _a, capacity, 0);
+        Buffers.ShrinkTo(ref _chord, capacity, 0);
+        Buffers.ShrinkTo(ref _substepStart, capacity, 0);
+        Buffers.ShrinkTo(ref _startChord, capacity, 0);
+        Buffers.ShrinkTo(ref _t, capacity, 0);
+        Buffers.ShrinkTo(ref _version, capacity, 0);
+        Buffers.ShrinkTo(ref _impacts, capacity, 0);
+        Buffers.ShrinkTo(ref _held, capacity, 0);
+        Buffers.ShrinkTo(ref _head, capacity, 0);
+    }
+
+    private void ShrinkContacts(int capacity)
+    {
+        Buffers.ShrinkTo(ref _next, 2 * capacity, 0);
+        Buffers.ShrinkTo(ref _limit, capacity, 0);
     }
 }

@@ -22,12 +22,12 @@ internal sealed partial class ImpactStepper
         bool held = _held[a.index];
         if (contact.IsPlaneContact)
         {
-            penetration = ContactGeometry.PlanePenetration(_substepStart[a.index], a.radius, contact.Normal, contact.PlaneOffset);
+            penetration = ContactGeometry.Unchecked.PlanePenetration(_substepStart[a.index], a.radius, contact.Normal, contact.PlaneOffset);
         }
         else
         {
             RigidBody b = contact.BodyB;
-            penetration = ContactGeometry.CirclePenetration(_substepStart[a.index], a.radius, _substepStart[b.index], b.radius, out _);
+            penetration = ContactGeometry.Unchecked.CirclePenetration(_substepStart[a.index], a.radius, _substepStart[b.index], b.radius, out _);
             smaller = MathF.Min(smaller, b.radius);
             held |= _held[b.index];
         }

@@ -50,7 +50,7 @@ internal sealed partial class ImpactStepper
                 continue; // filtered or sensor pairs never become contacts; others may have one already
             }
 
-            float penetration = ContactGeometry.CirclePenetration(first.position, first.radius, second.position, second.radius, out Vector3 normal);
+            float penetration = ContactGeometry.Unchecked.CirclePenetration(first.position, first.radius, second.position, second.radius, out Vector3 normal);
             AddContact(contacts, new Contact(first, second, first.position - normal * (first.radius - 0.5f * penetration), normal, penetration));
         }
 
@@ -64,7 +64,7 @@ internal sealed partial class ImpactStepper
         {
             if (planes[p].DistanceTo(_stepStart[i]) - body.radius < _reach[i] &&
                 _pairs.Add(Contact.PlaneKey(body.Id, p)) &&
-                ContactGeometry.TryCollide(body, planes[p], p, step.World.Ground, float.PositiveInfinity, 0f, out Contact contact))
+                ContactGeometry.Unchecked.TryCollide(body, planes[p], p, step.World.Ground, float.PositiveInfinity, 0f, out Contact contact))
             {
                 AddContact(contacts, contact);
             }

@@ -66,23 +66,26 @@ internal sealed partial class ImpactStepper
     /// </summary>
     private const double ClosingTolerance = 1e-5;
 
-    private Vector3[] _stepStart = new Vector3[16];
-    private float[] _reach = new float[16];
-    private Vector3[] _startVelocity = new Vector3[16];
-    private Vector3[] _forcedVelocity = new Vector3[16];
-    private Vector3[] _x = new Vector3[16];
-    private Vector3[] _u = new Vector3[16];
-    private Vector3[] _a = new Vector3[16];
-    private Vector3[] _chord = new Vector3[16];
-    private Vector3[] _substepStart = new Vector3[16];
-    private Vector3[] _startChord = new Vector3[16];
-    private double[] _t = new double[16];
-    private int[] _version = new int[16];
-    private int[] _impacts = new int[16];
-    private bool[] _held = new bool[16];
-    private int[] _head = new int[16];
-    private int[] _next = new int[32];
-    private float[] _limit = new float[16];
+    // Per body (ImpactStepper.Buffers.cs sizes them).
+    private Vector3[] _stepStart = new Vector3[InitialBodies];
+    private float[] _reach = new float[InitialBodies];
+    private Vector3[] _startVelocity = new Vector3[InitialBodies];
+    private Vector3[] _forcedVelocity = new Vector3[InitialBodies];
+    private Vector3[] _x = new Vector3[InitialBodies];
+    private Vector3[] _u = new Vector3[InitialBodies];
+    private Vector3[] _a = new Vector3[InitialBodies];
+    private Vector3[] _chord = new Vector3[InitialBodies];
+    private Vector3[] _substepStart = new Vector3[InitialBodies];
+    private Vector3[] _startChord = new Vector3[InitialBodies];
+    private double[] _t = new double[InitialBodies];
+    private int[] _version = new int[InitialBodies];
+    private int[] _impacts = new int[InitialBodies];
+    private bool[] _held = new bool[InitialBodies];
+    private int[] _head = new int[InitialBodies];
+
+    // Per contact: two list nodes each (one per end), and the depth limit.
+    private int[] _next = new int[2 * InitialContacts];
+    private float[] _limit = new float[InitialContacts];
     private readonly EventQueue _queue = new();
     private readonly PairKeySet _pairs = new();
     private bool _pairsReady;
@@ -408,11 +411,11 @@ internal sealed partial class ImpactStepper
         {
             StaticPlane plane = planes[contact.PlaneIndex];
             contact.Normal = plane.Normal;
-            contact.Penetration = ContactGeometry.PlanePenetration(a.position, a.radius, plane.Normal, plane.Offset);
+            contact.Penetration = ContactGeometry.Unchecked.PlanePenetration(a.position, a.radius, plane.Normal, plane.Offset);
         }
         else
         {
-            contact.Penetration = ContactGeometry.CirclePenetration(a.position, a.radius, contact.BodyB.position, contact.BodyB.radius, out contact.Normal);
+            contact.Penetration = ContactGeometry.Unchecked.CirclePenetration(a.position, a.radius, contact.BodyB.position, contact.BodyB.radius, out contact.Normal);
         }
 
         contact.Point = a.position - contact.Normal * (a.radius - 0.5f * contact.Penetration);

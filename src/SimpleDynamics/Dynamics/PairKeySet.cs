@@ -8,19 +8,18 @@ namespace SimpleDynamics;
 /// </summary>
 internal sealed class PairKeySet
 {
-    private ulong[] _keys = new ulong[64];
-    private bool[] _used = new bool[64];
+    private const int InitialSlots = 64;
+
+    private ulong[] _keys = new ulong[InitialSlots];
+    private bool[] _used = new bool[InitialSlots];
     private int _count;
+    private bool _resetSinceShrink; // whether the set was filled since the last ShrinkIfIdle, i.e. in this step
+    private ShrinkPolicy _room;
 
     /// <summary>Empties the set and makes room for <paramref name="expected"/> keys without growing.</summary>
     public void Reset(int expected)
     {
-        int capacity = 64;
-        while (capacity < 2 * expected)
-        {
-            capacity <<= 1;
-        }
-
+        int capacity = SlotsFor(expected);
         if (_keys.Length < capacity)
         {
             _keys = new ulong[capacity];
@@ -32,6 +31,52 @@ internal sealed class PairKeySet
         }
 
         _count = 0;
+        _resetSinceShrink = true;
+    }
+
+    /// <summary>
+    /// Applies the <see cref="ShrinkPolicy"/> once per step. Its use is the step's <paramref name="contacts"/> (or the
+    /// keys it held, if more): it is filled with every contact whenever a body is looked up again, which is rare, so it
+    /// stays ready for that between look-ups. It is filled afresh (<see cref="Reset"/>) before every use: nothing is kept.
+    /// </summary>
+    public void ShrinkIfIdle(int contacts)
+    {
+        // Measured in keys: the table holds up to half its slots.
+        int used = Math.Max(contacts, _resetSinceShrink ? _count : 0);
+        int room = _room.Observe(used, _keys.Length / 2, InitialSlots / 2);
+        _resetSinceShrink = false;
+        if (room > 0)
+        {
+            Reallocate(SlotsFor(room));
+        }
+    }
+
+    /// <summary>Gives back all the spare room; the set is empty afterwards.</summary>
+    public void TrimExcess()
+    {
+        if (_keys.Length > InitialSlots)
+        {
+            Reallocate(InitialSlots);
+        }
+    }
+
+    private void Reallocate(int slots)
+    {
+        _keys = new ulong[slots];
+        _used = new bool[slots];
+        _count = 0;
+    }
+
+    /// <summary>The power of two of at least 64 slots that holds <paramref name="keys"/> at most half full.</summary>
+    private static int SlotsFor(int keys)
+    {
+        int slots = InitialSlots;
+        while (slots < 2 * keys)
+        {
+            slots <<= 1;
+        }
+
+        return slots;
     }
 
     /// <summary>Adds a key; returns false if it was there already.</summary>

@@ -13,15 +13,18 @@ public sealed partial class World
     // which step) its firstTouch belongs to, even after it moves to another world.
     private static long s_lastTouchStamp;
 
+    private const int InitialTouchCapacity = 16;
+
     private readonly ContactEvents _contactEvents = new();
     private PairSet<ContactEvent> _previousTouch = new();
     private PairSet<SensorEvent> _previousSensor = new();
 
     // The touching contacts of the last step, in the order of ContactEvents.Touching; each body's touching
     // contacts form a linked list through _nextTouch (node 2k for body A of contact k, 2k + 1 for body B).
-    private Contact[] _touchContacts = new Contact[16];
-    private int[] _nextTouch = new int[32];
+    private Contact[] _touchContacts = new Contact[InitialTouchCapacity];
+    private int[] _nextTouch = new int[2 * InitialTouchCapacity];
     private long _touchStamp;
+    private ShrinkPolicy _touchRoom;
 
     private float _touchTolerance = 1e-4f;
     private float _hitSpeedThreshold = 1f;
@@ -244,5 +247,38 @@ public sealed partial class World
                 events.AddSensorEnd(before[i]);
             }
         }
+    }
+
+    /// <summary>
+    /// Applies the <see cref="ShrinkPolicy"/> to the event buffers after each step, keeping what
+    /// <see cref="ContactEvents"/> and <see cref="ContactsOf"/> read until the next step. Last step's sets
+    /// (the previous touch and sensor sets) are emptied at the next step, but their size follows their use all the same.
+    /// </summary>
+    private void ShrinkIdleEventBuffers()
+    {
+        int touching = _contactEvents.Touch.Count;
+        int room = _touchRoom.Observe(touching, _touchContacts.Length, InitialTouchCapacity);
+        if (room > 0)
+        {
+            Buffers.ShrinkTo(ref _touchContacts, room, touching);
+            Buffers.ShrinkTo(ref _nextTouch, 2 * room, 2 * touching);
+        }
+
+        _contactEvents.ShrinkIfIdle();
+        _previousTouch.ShrinkIfIdle();
+        _previousSensor.ShrinkIfIdle();
+    }
+
+    /// <summary>Gives back the spare room of the event buffers (<see cref="TrimExcess"/>), keeping what is read until the next step.</summary>
+    private void TrimEventBuffers()
+    {
+        int touching = _contactEvents.Touch.Count;
+        Buffers.Shrink(ref _touchContacts, Math.Max(touching, InitialTouchCapacity));
+        Buffers.Shrink(ref _nextTouch, 2 * Math.Max(touching, InitialTouchCapacity));
+        _contactEvents.TrimExcess();
+        _previousTouch.Clear();
+        _previousTouch.TrimExcess();
+        _previousSensor.Clear();
+        _previousSensor.TrimExcess();
     }
 }

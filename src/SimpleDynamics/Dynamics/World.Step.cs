@@ -27,7 +27,8 @@ public sealed partial class World
     ///   <see cref="ICollisionResponder.Collide"/>, see below),
     ///   measure the contacts, and the responder's <see cref="ICollisionResponder.SolvePositions"/> (listing 2);</item>
     /// <item>the responder's <see cref="ICollisionResponder.EndStep"/>, then measure the contacts for
-    ///   <see cref="Collisions"/>, report the contact events (<see cref="ContactEvents"/>) and clear the forces.</item>
+    ///   <see cref="Collisions"/>, report the contact events (<see cref="ContactEvents"/>), clear the forces, and shrink working arrays that have
+    ///   long been far larger than needed (see <see cref="TrimExcess"/>).</item>
     /// </list>
     /// <para><b>Collisions at their time of impact.</b> Within a substep each body's velocity goes uniformly from
     /// where it started to where gravity, forces and resting contacts take it, which is exact for free flight. Two
@@ -74,6 +75,7 @@ public sealed partial class World
             MeasureContacts();
             ReportContactEvents();
             ClearForces();
+            ShrinkIdleBuffers();
             Time += dt;
         }
         finally
@@ -121,7 +123,7 @@ public sealed partial class World
         {
             for (int p = 0; p < planes.Length; p++)
             {
-                if (ContactGeometry.TryCollide(body, planes[p], p, Ground, margin, dt, out Contact contact))
+                if (ContactGeometry.Unchecked.TryCollide(body, planes[p], p, Ground, margin, dt, out Contact contact))
                 {
                     Collisions.Add(contact);
                 }
@@ -159,7 +161,7 @@ public sealed partial class World
     {
         foreach (ref Contact contact in Collisions.Contacts)
         {
-            ContactGeometry.Refresh(ref contact);
+            ContactGeometry.Unchecked.Refresh(ref contact);
         }
     }
 

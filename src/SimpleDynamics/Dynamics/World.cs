@@ -25,7 +25,7 @@ namespace SimpleDynamics;
 /// </remarks>
 public sealed partial class World
 {
-    private RigidBody[] _bodies = new RigidBody[16];
+    private RigidBody[] _bodies = new RigidBody[InitialBodyCapacity];
     private int _bodyCount;
     private StaticPlane[] _planes = new StaticPlane[8];
     private int _planeCount;
@@ -237,30 +237,6 @@ public sealed partial class World
         list.CopyTo(_planes, _planeCount);
         _planeCount += list.Count;
     }
-
-    /// <summary>
-    /// Releases the spare room of the world's working arrays (bodies, planes, <see cref="Collisions"/>, and the
-    /// responder's and detector's buffers), which grow to the largest scene seen and otherwise never shrink:
-    /// call it after removing many bodies, not every step (it allocates the smaller arrays).
-    /// </summary>
-    /// <exception cref="InvalidOperationException">Called during <see cref="Step"/>.</exception>
-    public void TrimExcess()
-    {
-        ThrowIfStepping(nameof(TrimExcess));
-        Buffers.Shrink(ref _bodies, _bodyCount);
-        Buffers.Shrink(ref _planes, _planeCount);
-        Collisions.TrimExcess();
-        TrimStageBuffers();
-    }
-
-    /// <summary>Trims the buffers the step's stages keep (responder, detector); implemented beside them.</summary>
-    partial void TrimStageBuffers();
-
-    /// <summary>Room in the body array, for tests of <see cref="TrimExcess"/>.</summary>
-    internal int BodyCapacity => _bodies.Length;
-
-    /// <summary>Room in the plane array, for tests of <see cref="TrimExcess"/>.</summary>
-    internal int PlaneCapacity => _planes.Length;
 
     private static void ValidatePlane(in StaticPlane plane, string paramName)
     {

@@ -9,31 +9,111 @@ namespace SimpleDynamics;
 /// What a student checks the laws with, measured over the dynamic bodies (static and kinematic bodies have
 /// infinite mass and are left out). Energies are summed in double precision.
 /// </summary>
+/// <remarks>
+/// The world measures these (<see cref="World.Diagnostics"/>); a student may build one to compare against. Every
+/// value is checked when it is set: measured quantities are finite, the count and the energy are not negative.
+/// </remarks>
 public readonly struct WorldDiagnostics
 {
+    private readonly Vector3 _linearMomentum;
+    private readonly Vector3 _angularMomentum;
+    private readonly Vector3 _angularMomentumPoint;
+    private readonly double _kineticEnergy;
+    private readonly double _potentialEnergy;
+    private readonly int _contactCount;
+    private readonly float _maxPenetration;
+
     /// <summary>Σ m v (kg·m/s).</summary>
-    public Vector3 LinearMomentum { get; init; }
+    /// <exception cref="ArgumentException">Set to a vector that is not finite.</exception>
+    public Vector3 LinearMomentum
+    {
+        get => _linearMomentum;
+        init
+        {
+            Guard.Finite(value, nameof(LinearMomentum));
+            _linearMomentum = value;
+        }
+    }
 
     /// <summary>Σ (I_w ω + (c − point) × m v) about <see cref="AngularMomentumPoint"/> (kg·m²/s).</summary>
-    public Vector3 AngularMomentum { get; init; }
+    /// <exception cref="ArgumentException">Set to a vector that is not finite.</exception>
+    public Vector3 AngularMomentum
+    {
+        get => _angularMomentum;
+        init
+        {
+            Guard.Finite(value, nameof(AngularMomentum));
+            _angularMomentum = value;
+        }
+    }
 
     /// <summary>The fixed point the angular momentum is taken about.</summary>
-    public Vector3 AngularMomentumPoint { get; init; }
+    /// <exception cref="ArgumentException">Set to a point that is not finite.</exception>
+    public Vector3 AngularMomentumPoint
+    {
+        get => _angularMomentumPoint;
+        init
+        {
+            Guard.Finite(value, nameof(AngularMomentumPoint));
+            _angularMomentumPoint = value;
+        }
+    }
 
     /// <summary>Σ (½ m v² + ½ ωᵀ I_w ω) (J).</summary>
-    public double KineticEnergy { get; init; }
+    /// <exception cref="ArgumentOutOfRangeException">Set to a negative or non-finite value.</exception>
+    public double KineticEnergy
+    {
+        get => _kineticEnergy;
+        init
+        {
+            Guard.Finite(value, nameof(KineticEnergy));
+            if (value < 0)
+            {
+                throw new ArgumentOutOfRangeException(nameof(KineticEnergy), value, "KineticEnergy cannot be negative.");
+            }
+
+            _kineticEnergy = value;
+        }
+    }
 
     /// <summary>Σ −m g·c, zero at the origin (J).</summary>
-    public double PotentialEnergy { get; init; }
+    /// <exception cref="ArgumentOutOfRangeException">Set to a value that is not finite.</exception>
+    public double PotentialEnergy
+    {
+        get => _potentialEnergy;
+        init
+        {
+            Guard.Finite(value, nameof(PotentialEnergy));
+            _potentialEnergy = value;
+        }
+    }
 
     /// <summary>Kinetic plus potential energy (J).</summary>
     public double MechanicalEnergy => KineticEnergy + PotentialEnergy;
 
     /// <summary>Contacts in the last step.</summary>
-    public int ContactCount { get; init; }
+    /// <exception cref="ArgumentOutOfRangeException">Set to a negative count.</exception>
+    public int ContactCount
+    {
+        get => _contactCount;
+        init
+        {
+            Guard.AtLeast(value, 0, nameof(ContactCount));
+            _contactCount = value;
+        }
+    }
 
     /// <summary>Largest penetration among the last step's contacts at the end of the step (m); 0 if none.</summary>
-    public float MaxPenetration { get; init; }
+    /// <exception cref="ArgumentOutOfRangeException">Set to a value that is not finite.</exception>
+    public float MaxPenetration
+    {
+        get => _maxPenetration;
+        init
+        {
+            Guard.Finite(value, nameof(MaxPenetration));
+            _maxPenetration = value;
+        }
+    }
 }
 
 public sealed partial class World

@@ -10,7 +10,21 @@ namespace SimpleDynamics.Response;
 /// </summary>
 internal sealed class HeightOrder
 {
-    private int[] _cursor = new int[17];
+    private const int InitialCapacity = 17;
+
+    private int[] _cursor = new int[InitialCapacity];
+    private int _peak; // the most slices one sort used since the last ShrinkIfIdle
+    private ShrinkPolicy _room;
+
+    /// <summary>Applies the <see cref="ShrinkPolicy"/> once per step; the working array holds nothing between sorts.</summary>
+    public void ShrinkIfIdle()
+    {
+        Buffers.ShrinkIfIdle(ref _cursor, _peak, ref _room, InitialCapacity);
+        _peak = 0;
+    }
+
+    /// <summary>Gives back all the spare room.</summary>
+    public void TrimExcess() => Buffers.ShrinkTo(ref _cursor, InitialCapacity, 0);
 
     /// <summary>Fills <paramref name="order"/> with the indices 0 … n − 1 of <paramref name="heights"/>, lowest first.</summary>
     public void Sort(ReadOnlySpan<float> heights, Span<int> order)
@@ -34,6 +48,7 @@ internal sealed class HeightOrder
         }
 
         Buffers.EnsureCapacity(ref _cursor, n + 1);
+        _peak = Math.Max(_peak, n + 1);
         Array.Clear(_cursor, 0, n + 1);
         float scale = (n - 1) / (highest - lowest);
         for (int i = 0; i < n; i++)

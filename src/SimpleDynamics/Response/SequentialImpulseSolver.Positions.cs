@@ -82,11 +82,11 @@ public sealed partial class SequentialImpulseSolver
         if (c.IsPlaneContact)
         {
             normal = c.Normal;
-            penetration = ContactGeometry.PlanePenetration(positionA, c.RadiusA, normal, c.PlaneOffset);
+            penetration = ContactGeometry.Unchecked.PlanePenetration(positionA, c.RadiusA, normal, c.PlaneOffset);
         }
         else
         {
-            penetration = ContactGeometry.CirclePenetration(positionA, c.RadiusA, positionB, c.RadiusB, out normal);
+            penetration = ContactGeometry.Unchecked.CirclePenetration(positionA, c.RadiusA, positionB, c.RadiusB, out normal);
         }
 
         float correction = shock ? penetration - _slop : MathF.Min(factor * (penetration - _slop), _maxCorrection);

@@ -10,16 +10,16 @@ namespace SimpleDynamics.Response;
 public sealed partial class SequentialImpulseSolver
 {
     private readonly HeightOrder _heightOrder = new();
-    private VelocityState[] _bodies = new VelocityState[16];
-    private Vector3[] _positions = new Vector3[16];
-    private ContactConstraint[] _constraints = new ContactConstraint[16];
-    private int[] _order = new int[16];
-    private int[] _bodyOrder = new int[16];
-    private int[] _slotOf = new int[16];
-    private float[] _bodyHeights = new float[16];
-    private float[] _radii = new float[16];
-    private Contact[] _arranged = new Contact[16];
-    private float[] _heights = new float[16];
+    private VelocityState[] _bodies = new VelocityState[InitialCapacity];
+    private Vector3[] _positions = new Vector3[InitialCapacity];
+    private ContactConstraint[] _constraints = new ContactConstraint[InitialCapacity];
+    private int[] _order = new int[InitialCapacity];
+    private int[] _bodyOrder = new int[InitialCapacity];
+    private int[] _slotOf = new int[InitialCapacity];
+    private float[] _bodyHeights = new float[InitialCapacity];
+    private float[] _radii = new float[InitialCapacity];
+    private Contact[] _arranged = new Contact[InitialCapacity];
+    private float[] _heights = new float[InitialCapacity];
     private int _prepared;
     private Vector3 _gravity;
 
@@ -159,11 +159,11 @@ public sealed partial class SequentialImpulseSolver
             float penetration;
             if (c.IsPlaneContact)
             {
-                penetration = ContactGeometry.PlanePenetration(positionA, c.RadiusA, c.Normal = PlaneNormal(k), c.PlaneOffset);
+                penetration = ContactGeometry.Unchecked.PlanePenetration(positionA, c.RadiusA, c.Normal = PlaneNormal(k), c.PlaneOffset);
             }
             else
             {
-                penetration = ContactGeometry.CirclePenetration(positionA, c.RadiusA, _positions[c.B], c.RadiusB, out c.Normal);
+                penetration = ContactGeometry.Unchecked.CirclePenetration(positionA, c.RadiusA, _positions[c.B], c.RadiusB, out c.Normal);
             }
 
             Vector3 point = positionA - c.Normal * (c.RadiusA - 0.5f * penetration);

@@ -301,11 +301,15 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
     }
 
     /// <inheritdoc />
-    /// <remarks>Keeps the last substep's accumulated impulses for the next step's warm start (contact persistence).</remarks>
+    /// <remarks>
+    /// Keeps the last substep's accumulated impulses for the next step's warm start (contact persistence), and lets
+    /// working arrays that have long been far larger than the steps need shrink (see <see cref="TrimExcess"/>).
+    /// </remarks>
     public void EndStep(StepContext step)
     {
         CheckStage(step, StepStage.EndStep);
         StoreImpulses(step.Contacts.Contacts);
+        ShrinkIdleBuffers(step.Bodies.Length, step.Contacts.Count);
         _step = null;
     }
 

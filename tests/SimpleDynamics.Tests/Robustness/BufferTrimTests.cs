@@ -5,15 +5,101 @@ using SimpleDynamics.Bodies;
 using SimpleDynamics.Collision;
 using SimpleDynamics.Response;
 using Xunit;
+using Xunit.Abstractions;
 
 namespace SimpleDynamics.Tests.Robustness;
 
 /// <summary>
 /// The working arrays grow to the largest scene seen and are kept (a warm step allocates nothing); an explicit
-/// <see cref="World.TrimExcess"/> gives the room back once the scene has shrunk.
+/// <see cref="World.TrimExcess"/> gives the room back once the scene has shrunk, and so does a world that stays
+/// small for long enough (<see cref="ShrinkPolicy"/>), without reallocating while its need is steady.
 /// </summary>
+/// <remarks>
+/// The memory tests weigh the whole heap (<see cref="GC.GetTotalMemory"/>), so they run in a collection of their
+/// own, with no other test allocating at the same time.
+/// </remarks>
+[Collection(nameof(MemoryMeasurements))]
 public class BufferTrimTests
 {
+    private readonly ITestOutputHelper _output;
+
+    public BufferTrimTests(ITestOutputHelper output) => _output = output;
+
+    [Fact]
+    public void The_issue_crowd_stepped_then_removed_holds_no_more_than_an_empty_world_after_TrimExcess()
+    {
+        long emptyWorld = Weigh(() => SteppedCrowd(0), out _);
+        long baseline = Heap();
+        World world = SteppedCrowd(300);
+        long grown = Heap() - baseline;
+        RemoveAll(world);
+        // Two steps: the first reports the removed pairs' end events, which are readable until the next one.
+        Step(world, 2);
+        world.TrimExcess();
+        long trimmed = Heap() - baseline;
+        _output.WriteLine($"empty world {emptyWorld / 1024} KiB, crowd {grown / 1024} KiB, trimmed {trimmed / 1024} KiB");
+
+        Assert.True(grown > 10 * 1024 * 1024, $"the crowd should grow the buffers by many MiB, not {grown / 1024} KiB");
+        Assert.True(trimmed < emptyWorld + 64 * 1024, $"the trimmed world holds {trimmed / 1024} KiB, an empty one {emptyWorld / 1024} KiB");
+        StepsAsBefore(world);
+    }
+
+    [Fact]
+    public void A_world_that_stays_empty_after_the_crowd_gives_the_memory_back_without_being_asked()
+    {
+        long emptyWorld = Weigh(() => SteppedCrowd(0), out _);
+        long baseline = Heap();
+        World world = SteppedCrowd(300);
+        long grown = Heap() - baseline;
+        RemoveAll(world);
+
+        // The policy's steps, and one more for the contact cache's second table, reallocated when it is next written.
+        Step(world, ShrinkPolicy.QuietSteps + 1);
+        long shrunk = Heap() - baseline;
+        _output.WriteLine($"empty world {emptyWorld / 1024} KiB, crowd {grown / 1024} KiB, after {ShrinkPolicy.QuietSteps + 1} empty steps {shrunk / 1024} KiB");
+
+        // Automatic shrinking keeps up to ShrinkPolicy.MinimumCapacity items per array: well under 1 MiB in all.
+        Assert.True(grown > 10 * 1024 * 1024, $"the crowd should grow the buffers by many MiB, not {grown / 1024} KiB");
+        Assert.True(shrunk < emptyWorld + 1024 * 1024, $"the idle world holds {shrunk / 1024} KiB, an empty one {emptyWorld / 1024} KiB");
+        StepsAsBefore(world);
+    }
+
+    [Fact]
+    public void A_steady_pile_shrinks_once_after_a_burst_and_then_steps_without_allocating()
+    {
+        World world = Scenes.BallPit(300, planar: true, seed: 4);
+        Step(world, 200);
+        int steadyCapacity = world.Collisions.Capacity;
+
+        // A burst: 150 bodies within 1 mm of each other, far from the pile, for one step.
+        var burst = new RigidBody[150];
+        var random = new Random(7);
+        for (int i = 0; i < burst.Length; i++)
+        {
+            var offset = new Vector3((float)random.NextDouble(), (float)random.NextDouble(), (float)random.NextDouble()) * 1e-3f;
+            burst[i] = world.Add(new RigidBody(1f, 0.1f, new Vector3(50, 5, 0) + offset));
+        }
+
+        world.Step(1f / 60f);
+        int burstCapacity = world.Collisions.Capacity;
+        foreach (RigidBody body in burst)
+        {
+            world.Remove(body);
+        }
+
+        // Long enough for every buffer's policy, then steady.
+        Step(world, ShrinkPolicy.QuietSteps + 10);
+        int shrunkCapacity = world.Collisions.Capacity;
+        long before = GC.GetAllocatedBytesForCurrentThread();
+        Step(world, 3 * ShrinkPolicy.QuietSteps);
+        long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+        _output.WriteLine($"contact capacity: steady {steadyCapacity}, burst {burstCapacity}, shrunk {shrunkCapacity}, now {world.Collisions.Capacity} for {world.Collisions.Count} contacts; {allocated} bytes");
+
+        Assert.True(burstCapacity >= 150 * 149 / 2, $"the burst should grow the contacts, capacity {burstCapacity}");
+        Assert.True(shrunkCapacity <= 4 * world.Collisions.Count, $"capacity {shrunkCapacity} for {world.Collisions.Count} contacts");
+        Assert.Equal(shrunkCapacity, world.Collisions.Capacity); // no shrink-then-grow while the need is steady
+        Assert.Equal(0, allocated);
+    }
     [Fact]
     public void A_crowd_of_2000_grows_the_contact_buffer_and_TrimExcess_gives_the_room_back()
     {
@@ -39,6 +125,56 @@ public class BufferTrimTests
         world.Step(1f / 60f);
         Assert.Equal(3, world.Bodies.Count);
         Assert.All(world.Bodies, b => Assert.True(float.IsFinite(b.Position.X)));
+    }
+
+    /// <summary>The issue's crowd, <paramref name="count"/> bodies within 1 mm, stepped once as cheaply as can be.</summary>
+    private static World SteppedCrowd(int count)
+    {
+        World world = Crowd(count);
+        // One substep and one cheap iteration: the buffers are the point, not the solution.
+        world.Responder = new SequentialImpulseSolver { VelocityIterations = 1, PositionIterations = 0, ExtraIterations = 0 };
+        world.Substeps = 1;
+        world.Step(1f / 60f);
+        return world;
+    }
+
+    /// <summary>The bytes the world made by <paramref name="make"/> holds (with its responder and detector).</summary>
+    private static long Weigh(Func<World> make, out World world)
+    {
+        long before = Heap();
+        world = make();
+        long after = Heap();
+        GC.KeepAlive(world);
+        return after - before;
+    }
+
+    private static long Heap() => GC.GetTotalMemory(forceFullCollection: true);
+
+    private static void RemoveAll(World world)
+    {
+        foreach (RigidBody body in world.Bodies.ToArray())
+        {
+            world.Remove(body);
+        }
+    }
+
+    /// <summary>A trimmed or shrunk world grows again as needed and steps as before.</summary>
+    private static void StepsAsBefore(World world)
+    {
+        world.Add(new RigidBody(1f, 0.1f, new Vector3(1, 1, 1)));
+        world.Add(new RigidBody(1f, 0.1f, new Vector3(1.15f, 1, 1)));
+        world.Step(1f / 60f);
+        Assert.Equal(2, world.Bodies.Count);
+        Assert.Equal(1, world.Collisions.Count);
+        Assert.All(world.Bodies, b => Assert.True(float.IsFinite(b.Position.X)));
+    }
+
+    private static void Step(World world, int steps)
+    {
+        for (int i = 0; i < steps; i++)
+        {
+            world.Step(1f / 60f);
+        }
     }
 
     /// <summary>Bodies of radius 0.1 m all within 1 mm of each other, so every pair overlaps, in a closed box.</summary>
@@ -99,4 +235,10 @@ public class BufferTrimTests
         collisions.Add(contact);
         Assert.Equal(2, collisions.Count);
     }
+}
+
+/// <summary>Tests that weigh the heap: run alone, after the parallel tests.</summary>
+[CollectionDefinition(nameof(MemoryMeasurements), DisableParallelization = true)]
+public class MemoryMeasurements
+{
 }

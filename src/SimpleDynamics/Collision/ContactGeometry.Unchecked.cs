@@ -1,0 +1,129 @@
+using System;
+using System.Numerics;
+using SimpleDynamics.Bodies;
+
+namespace SimpleDynamics.Collision;
+
+public static partial class ContactGeometry
+{
+    /// <summary>
+    /// The same functions without argument checks, for the library's hot path: detection, the impact pass and the
+    /// solver call them per pair or per contact and substep with values the world has already checked (finite
+    /// positions, positive radii, unit plane normals), so checking them again there would only cost time. The public
+    /// functions check their arguments and call these.
+    /// </summary>
+    internal static class Unchecked
+    {
+        /// <summary>
+        /// Penetration of two circles along the line of centres, r_A + r_B − d, and the unit normal from B to A.
+        /// Coincident centres (d below about 1e-6 of the radii) get the defined normal +y, never NaN.
+        /// </summary>
+        public static float CirclePenetration(Vector3 centreA, float radiusA, Vector3 centreB, float radiusB, out Vector3 normal)
+        {
+            Vector3 delta = centreA - centreB;
+            float distanceSquared = delta.LengthSquared();
+            float radii = radiusA + radiusB;
+            if (distanceSquared <= 1e-12f * radii * radii)
+            {
+                normal = Vector3.UnitY;
+                return radii;
+            }
+
+            float distance = MathF.Sqrt(distanceSquared);
+            normal = delta / distance;
+            return radii - distance;
+        }
+
+        /// <summary>Penetration of a circle into a plane: r − (signed distance of the centre).</summary>
+        public static float PlanePenetration(Vector3 centre, float radius, Vector3 planeNormal, float planeOffset) =>
+            radius - (Vector3.Dot(planeNormal, centre) - planeOffset);
+
+        /// <summary>
+        /// True when the bounding circles of two bodies overlap (d &lt; r_A + r_B) and the pair can collide (at least
+        /// one is dynamic). Fills a contact with A = <paramref name="a"/>, B = <paramref name="b"/>.
+        /// </summary>
+        public static bool TryCollide(RigidBody a, RigidBody b, out Contact contact) => TryCollide(a, b, 0f, 0f, out contact);
+
+        /// <summary>
+        /// True when the pair can collide (at least one body is dynamic) and may touch within
+        /// <paramref name="lookahead"/> seconds: the gap between their circles is less than <paramref name="margin"/>
+        /// plus the distance both can travel at their speeds, (|v_A| + |v_B|) × lookahead. Each body then stays within a
+        /// sphere of radius r + margin / 2 + |v| × lookahead around where it starts, and two bodies whose spheres do not
+        /// overlap cannot meet (the world looks a body up again if a collision sends it further). With margin and
+        /// lookahead 0 this is the overlap test d &lt; r_A + r_B. A reported pair with a gap has a negative
+        /// <see cref="Contact.Penetration"/>.
+        /// </summary>
+        public static bool TryCollide(RigidBody a, RigidBody b, float margin, float lookahead, out Contact contact)
+        {
+            contact = default;
+            if (!a.IsDynamic && !b.IsDynamic)
+            {
+                return false; // two infinite masses: nothing to resolve
+            }
+
+            float reach = a.radius + b.radius + margin + lookahead * (a.linearVelocity.Length() + b.linearVelocity.Length());
+            if (Vector3.DistanceSquared(a.position, b.position) >= reach * reach)
+            {
+                return false;
+            }
+
+            if (!PairFilter.Allows(a, b)) return false; // filtered pairs and sensors never become contacts
+            float penetration = CirclePenetration(a.position, a.radius, b.position, b.radius, out Vector3 normal);
+
+            Vector3 point = a.position - normal * (a.radius - 0.5f * penetration);
+            contact = new Contact(a, b, point, normal, penetration);
+            return true;
+        }
+
+        /// <summary>
+        /// True when a dynamic body's circle reaches into a plane, or comes within <paramref name="margin"/> plus
+        /// the distance it can travel in <paramref name="lookahead"/> seconds; fills the contact (B = ground).
+        /// </summary>
+        public static bool TryCollide(RigidBody body, in StaticPlane plane, int planeIndex, RigidBody ground, float margin, float lookahead, out Contact contact)
+        {
+            contact = default;
+            if (!body.IsDynamic)
+            {
+                return false;
+            }
+
+            float penetration = PlanePenetration(body.position, body.radius, plane.Normal, plane.Offset);
+            if (-penetration >= margin + lookahead * body.linearVelocity.Length())
+            {
+                return false;
+            }
+
+            if (!PairFilter.Allows(body, plane, planeIndex)) return false; // filtered pairs and sensors never become contacts
+            Vector3 point = body.position - plane.Normal * (body.radius - 0.5f * penetration);
+            contact = new Contact(body, ground, point, plane.Normal, penetration)
+            {
+                Key = Contact.PlaneKey(body.Id, planeIndex),
+                PlaneIndex = planeIndex,
+                PlaneOffset = plane.Offset,
+                PlaneRestitution = plane.Restitution,
+                PlaneFriction = plane.Friction,
+            };
+            return true;
+        }
+
+        /// <summary>
+        /// Measures a contact again at the bodies' current positions: penetration, normal and point. Used after
+        /// positions have moved within a step.
+        /// </summary>
+        public static void Refresh(ref Contact contact)
+        {
+            RigidBody a = contact.BodyA;
+            if (contact.PlaneIndex >= 0)
+            {
+                contact.Penetration = PlanePenetration(a.position, a.radius, contact.Normal, contact.PlaneOffset);
+            }
+            else
+            {
+                RigidBody b = contact.BodyB;
+                contact.Penetration = CirclePenetration(a.position, a.radius, b.position, b.radius, out contact.Normal);
+            }
+
+            contact.Point = a.position - contact.Normal * (a.radius - 0.5f * contact.Penetration);
+        }
+    }
+}
