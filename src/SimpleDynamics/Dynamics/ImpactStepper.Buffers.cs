@@ -21,9 +21,24 @@ internal sealed partial class ImpactStepper
         for (int k = 0; k < contacts.Count; k++)
         {
             ref Contact contact = ref contacts[k];
-            Link(k, contact.BodyA.index, contact.BodyB.index);
+            Ends(ref contact, out int a, out int b);
+            Link(k, a, b);
         }
 
+    }
+
+    /// <summary>The indices of a contact's bodies in the world, read once a step from the bodies and then from the contact.</summary>
+    private void Ends(ref Contact contact, out int a, out int b)
+    {
+        if (contact.EndsStep != _stepNumber)
+        {
+            contact.EndA = contact.BodyA.index;
+            contact.EndB = contact.BodyB.index;
+            contact.EndsStep = _stepNumber;
+        }
+
+        a = contact.EndA;
+        b = contact.EndB;
     }
 
     private void Link(int k, int a, int b)

@@ -48,7 +48,7 @@ internal sealed partial class ImpactStepper
     private void Predict(CollisionData contacts, int k)
     {
         ref Contact contact = ref contacts[k];
-        int a = contact.BodyA.index, b = contact.BodyB.index;
+        Ends(ref contact, out int a, out int b);
         if (Separating(contact, a, b))
         {
             return; // most contacts of a resting pile: no impact this substep, and no need to measure them

@@ -76,7 +76,8 @@ internal sealed partial class ImpactStepper
         contacts.Add(contact);
         int k = contacts.Count - 1;
         EnsureContacts(contacts.Count);
-        Link(k, contact.BodyA.index, contact.BodyB.index);
+        Ends(ref contacts[k], out int a, out int b);
+        Link(k, a, b);
         _limit[k] = float.NaN;
         Predict(contacts, k);
     }

@@ -91,6 +91,7 @@ internal sealed partial class ImpactStepper
     private bool _pairsReady;
     private bool _jammed;
     private double _h;
+    private long _stepNumber;
 
     /// <summary>Impacts answered in the last step.</summary>
     public int ImpactCount { get; private set; }
@@ -139,6 +140,7 @@ internal sealed partial class ImpactStepper
         ReadOnlySpan<RigidBody> bodies = step.Bodies;
         CollisionData contacts = step.Contacts;
         _h = h;
+        _stepNumber = step.StepNumber;
         int n = bodies.Length;
         for (int i = 0; i < n; i++)
         {
@@ -193,7 +195,7 @@ internal sealed partial class ImpactStepper
         {
             EventQueue.Entry next = _queue.Pop();
             ref Contact contact = ref contacts[next.Contact];
-            int a = contact.BodyA.index, b = contact.BodyB.index;
+            Ends(ref contact, out int a, out int b);
             if (_version[a] != next.VersionA || (b >= 0 && _version[b] != next.VersionB))
             {
                 continue; // a body of this pair has collided since: its prediction is stale
@@ -263,7 +265,7 @@ internal sealed partial class ImpactStepper
             for (int k = 0; k < contacts.Count; k++)
             {
                 ref Contact contact = ref contacts[k];
-                int a = contact.BodyA.index, b = contact.BodyB.index;
+                Ends(ref contact, out int a, out int b);
                 if (_impacts[a] < ImpactsPerBody && (b < 0 || _impacts[b] < ImpactsPerBody))
                 {
                     continue;
