@@ -17,6 +17,13 @@ internal sealed class ContactCache
     private int _shrinkTo;       // the room, in contacts, the policy chose last
     private int _tablesToShrink; // how many tables are still to be reallocated to it (each when next written)
 
+    /// <summary>
+    /// The substep length the stored impulses were accumulated over (0: none stored). An impulse that holds a
+    /// resting contact for a substep is its force times the substep's length, so a warm start with another length
+    /// scales them by the ratio (a pile stepped at dt = 1/30 after 1/60 needs twice the impulse per substep).
+    /// </summary>
+    public float SubstepLength { get; set; }
+
     /// <summary>Looks up last step's impulses of a pair.</summary>
     public bool TryGet(ulong key, out float normalImpulse, out Vector3 frictionImpulse) =>
         _previous.TryGet(key, out normalImpulse, out frictionImpulse);

@@ -130,8 +130,8 @@ public sealed partial class SequentialImpulseSolver
             c.PlaneOffset = contact.IsPlaneContact ? contact.PlaneOffset : float.NaN;
             if (WarmStarting && _cache.TryGet(contact.Key, out float normalImpulse, out Vector3 frictionImpulse))
             {
-                c.NormalImpulse = normalImpulse;
-                c.FrictionImpulse = frictionImpulse;
+                c.NormalImpulse = normalImpulse * _warmStartScale;
+                c.FrictionImpulse = frictionImpulse * _warmStartScale;
             }
         }
 

@@ -202,5 +202,6 @@ public sealed partial class SequentialImpulseSolver
         }
 
         _cache.EndStep();
+        _cache.SubstepLength = _step!.SubstepLength;
     }
 }

@@ -50,6 +50,7 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
 {
     private readonly ConditionalWeakTable<World, ContactCache> _caches = new();
     private ContactCache _cache = new();
+    private float _warmStartScale = 1f; // this step's substep length over the one the cached impulses were stored for
     private StepContext? _step;
     private long _stepNumber;
 
@@ -234,6 +235,7 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
         _step = step;
         _stepNumber = step.StepNumber;
         _cache = _caches.GetOrCreateValue(step.World);
+        _warmStartScale = _cache.SubstepLength > 0 ? step.SubstepLength / _cache.SubstepLength : 1f;
         Span<Contact> contacts = step.Contacts.Contacts;
         GatherBodies(step.Bodies, step.Gravity);
         OrderAlongGravity(contacts, step.Gravity);

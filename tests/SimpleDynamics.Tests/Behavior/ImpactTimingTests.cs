@@ -325,7 +325,13 @@ public class ImpactTimingTests
         Assert.InRange(end, start * 0.99, start * 1.0001);
     }
 
-    [Theory(Skip = "Not met yet: a pile settled at 4 substeps and stepped with 1 substep (or dt = 1/30) has balls jumping at 0.2–2.5 m/s; see the world-laws issue's closing note.")]
+    /// <summary>
+    /// The warm start carries last step's impulses, each a force times last step's substep length; a step with another
+    /// substep length must scale them, or a pile settled at 4 substeps and stepped with 1 (or with dt = 1/30) starts
+    /// each substep with a quarter (a half) of the impulse that holds it and sinks into impacts (balls jumped at
+    /// 0.2–2.5 m/s before they were scaled).
+    /// </summary>
+    [Theory]
     [InlineData(1f / 30f, 4)]
     [InlineData(1f / 60f, 1)]
     public void A_settled_pile_stays_still_when_the_step_or_the_substeps_change(float dt, int substeps)
@@ -345,7 +351,7 @@ public class ImpactTimingTests
         }
 
         _output.WriteLine($"dt {dt}, substeps {substeps}: fastest ball {fastest} m/s");
-        Assert.True(fastest < 0.05f, $"a ball moved at {fastest} m/s");
+        Assert.True(fastest < 1e-3f, $"a ball moved at {fastest} m/s");
     }
 
     [Fact]
