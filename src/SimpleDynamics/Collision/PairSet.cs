@@ -7,6 +7,11 @@ namespace SimpleDynamics.Collision;
 /// an open-addressing hash set (linear probing) over a dense list. Both arrays are kept and only grow, so a
 /// warm world allocates nothing here; comparing this step's set with last step's yields the begin and end events.
 /// </summary>
+/// <remarks>
+/// The first <see cref="HeldCount"/> items are held: the pairs of sleeping bodies, which stay touching from step to
+/// step without being found again. <see cref="TruncateTo"/> drops the rest in time proportional to what it drops, so
+/// a step of a world that mostly sleeps costs nothing for the held pairs.
+/// </remarks>
 internal sealed class PairSet<T>
     where T : struct
 {
@@ -16,7 +21,14 @@ internal sealed class PairSet<T>
     // _slots[h] is 0 when empty, else (index into _keys/_items) + 1. Kept at most half full, so probes are short.
     private int[] _slots = new int[32];
 
+    // Spare arrays Permute writes into, then swaps with the live ones.
+    private ulong[] _spareKeys = new ulong[16];
+    private T[] _spareItems = new T[16];
+
     public int Count { get; private set; }
+
+    /// <summary>How many items at the front are held (kept by <see cref="TruncateTo"/>); set by <see cref="Permute"/>.</summary>
+    public int HeldCount { get; private set; }
 
     /// <summary>The items in the order they were added.</summary>
     public ReadOnlySpan<T> Items => _items.AsSpan(0, Count);
@@ -73,9 +85,83 @@ internal sealed class PairSet<T>
     /// <summary>Empties the set and keeps its storage.</summary>
     public void Clear()
     {
+        HeldCount = 0;
+        if (8 * Count < _slots.Length)
+        {
+            TruncateTo(0); // a few items in a large table: remove them one by one rather than clear the table
+            return;
+        }
+
         Array.Clear(_items, 0, Count); // drop body references so removed bodies can be collected
         Array.Clear(_slots, 0, _slots.Length);
         Count = 0;
+    }
+
+    /// <summary>Removes the items from <paramref name="count"/> on (not below <see cref="HeldCount"/>), last first.</summary>
+    public void TruncateTo(int count)
+    {
+        int mask = _slots.Length - 1;
+        for (int i = Count - 1; i >= count; i--)
+        {
+            int h = Home(_keys[i], mask);
+            while (_slots[h] != i + 1)
+            {
+                h = (h + 1) & mask;
+            }
+
+            // Backward-shift deletion (Knuth 6.4, algorithm R): move up each later entry of the probe run whose home
+            // does not lie cyclically in (h, j], so that no lookup meets a hole before finding its key.
+            for (int j = (h + 1) & mask; _slots[j] != 0; j = (j + 1) & mask)
+            {
+                int home = Home(_keys[_slots[j] - 1], mask);
+                bool stays = h <= j ? h < home && home <= j : h < home || home <= j;
+                if (!stays)
+                {
+                    _slots[h] = _slots[j];
+                    h = j;
+                }
+            }
+
+            _slots[h] = 0;
+            _items[i] = default;
+        }
+
+        Count = Math.Min(Count, count);
+        HeldCount = Math.Min(HeldCount, Count);
+    }
+
+    /// <summary>
+    /// Puts the items in the order <paramref name="order"/> gives (item k becomes the old item order[k]) and holds the
+    /// first <paramref name="heldCount"/> of them. Rebuilds the table: done only when pairs fall asleep or wake.
+    /// </summary>
+    public void Permute(ReadOnlySpan<int> order, int heldCount)
+    {
+        // The spare arrays as long as the live ones, so that swapping them never leaves a shorter array to grow.
+        Buffers.EnsureCapacity(ref _spareKeys, _keys.Length);
+        Buffers.EnsureCapacity(ref _spareItems, _items.Length);
+        for (int k = 0; k < Count; k++)
+        {
+            _spareKeys[k] = _keys[order[k]];
+            _spareItems[k] = _items[order[k]];
+        }
+
+        (_keys, _spareKeys) = (_spareKeys, _keys);
+        (_items, _spareItems) = (_spareItems, _items);
+        Array.Clear(_spareItems, 0, Count);
+        Array.Clear(_slots, 0, _slots.Length);
+        int mask = _slots.Length - 1;
+        for (int i = 0; i < Count; i++)
+        {
+            int h = Home(_keys[i], mask);
+            while (_slots[h] != 0)
+            {
+                h = (h + 1) & mask;
+            }
+
+            _slots[h] = i + 1;
+        }
+
+        HeldCount = heldCount;
     }
 
     /// <summary>The key of a pair of bodies, whichever order they come in.</summary>

@@ -75,6 +75,11 @@ public sealed partial class World
         set
         {
             Guard.Finite(value, nameof(Gravity));
+            if (value != _gravity)
+            {
+                WakeAll(); // a pile at rest under the old gravity is not at rest under the new one
+            }
+
             _gravity = value;
         }
     }
@@ -153,7 +158,11 @@ public sealed partial class World
     /// <summary>Simulated time so far (s).</summary>
     public double Time { get; private set; }
 
-    internal ReadOnlySpan<RigidBody> BodySpan => _bodies.AsSpan(0, _bodyCount);
+    /// <summary>The bodies each step works on: the awake ones (all of them while none sleeps), in slots <c>index</c>.</summary>
+    internal ReadOnlySpan<RigidBody> BodySpan => AwakeSpan;
+
+    /// <summary>Every body, awake or asleep, in the order of <see cref="Bodies"/>.</summary>
+    internal ReadOnlySpan<RigidBody> AllBodies => _bodies.AsSpan(0, _bodyCount);
 
     /// <summary>Adds a body and returns it.</summary>
     /// <exception cref="ArgumentNullException"><paramref name="body"/> is null.</exception>
@@ -169,9 +178,10 @@ public sealed partial class World
 
         ThrowIfStepping(nameof(Add));
         Buffers.EnsureCapacity(ref _bodies, _bodyCount + 1);
-        body.index = _bodyCount;
+        body.worldSlot = _bodyCount;
         body.World = this;
         _bodies[_bodyCount++] = body;
+        AddAwake(body);
         _bodiesVersion++;
         return body;
     }
@@ -191,12 +201,14 @@ public sealed partial class World
             return false;
         }
 
-        int slot = body.index;
+        WakeWhatRestsOn(body);
+        RemoveAwake(body);
+        int slot = body.worldSlot;
         RigidBody last = _bodies[--_bodyCount];
         _bodies[slot] = last;
-        last.index = slot;
+        last.worldSlot = slot;
         _bodies[_bodyCount] = null!;
-        body.index = -1;
+        body.worldSlot = -1;
         body.World = null;
         _bodiesVersion++;
         // The contacts are dropped when Collisions is next read: one pass for however many removals.
@@ -213,6 +225,7 @@ public sealed partial class World
         ThrowIfStepping(nameof(AddPlane));
         Buffers.EnsureCapacity(ref _planes, _planeCount + 1);
         _planes[_planeCount++] = plane;
+        WakeAll(); // the plane may cut through sleeping bodies
     }
 
     /// <summary>
@@ -236,6 +249,7 @@ public sealed partial class World
         Buffers.EnsureCapacity(ref _planes, _planeCount + list.Count);
         list.CopyTo(_planes, _planeCount);
         _planeCount += list.Count;
+        WakeAll(); // the planes may cut through sleeping bodies
     }
 
     /// <summary>
@@ -248,6 +262,7 @@ public sealed partial class World
     {
         ThrowIfStepping(nameof(TrimExcess));
         Buffers.Shrink(ref _bodies, _bodyCount);
+        Buffers.Shrink(ref _awake, _awakeCount);
         Buffers.Shrink(ref _planes, _planeCount);
         Collisions.TrimExcess();
         TrimStageBuffers();
