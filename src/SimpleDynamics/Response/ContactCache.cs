@@ -39,6 +39,11 @@ internal sealed class ContactCache
         private Entry[] _entries;
         private int _mask;
 
+        // The slots Set filled since the last Reset, so that a table that once held a whole pit and now holds a
+        // few awake contacts (the rest asleep) is emptied in proportion to what it holds, not to its size.
+        private int[] _used = new int[16];
+        private int _usedCount;
+
         public Table(int capacity)
         {
             _entries = new Entry[capacity];
@@ -57,11 +62,19 @@ internal sealed class ContactCache
             {
                 _entries = new Entry[capacity];
             }
+            else if (8 * _usedCount < _entries.Length)
+            {
+                for (int i = 0; i < _usedCount; i++)
+                {
+                    _entries[_used[i]] = default;
+                }
+            }
             else
             {
                 Array.Clear(_entries, 0, _entries.Length);
             }
 
+            _usedCount = 0;
             _mask = _entries.Length - 1;
         }
 
@@ -71,6 +84,12 @@ internal sealed class ContactCache
             while (_entries[slot].Occupied && _entries[slot].Key != key)
             {
                 slot = (slot + 1) & _mask;
+            }
+
+            if (!_entries[slot].Occupied)
+            {
+                Buffers.EnsureCapacity(ref _used, _usedCount + 1);
+                _used[_usedCount++] = slot;
             }
 
             _entries[slot] = new Entry { Key = key, Occupied = true, Normal = normal, Friction = friction };
