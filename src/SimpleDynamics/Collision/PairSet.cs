@@ -130,15 +130,20 @@ internal sealed class PairSet<T>
         HeldCount = Math.Min(HeldCount, Count);
     }
 
+    /// <summary>Grows the spare arrays of <see cref="Permute"/> to the live ones' length.</summary>
+    public void ReserveSpare()
+    {
+        Buffers.EnsureCapacity(ref _spareKeys, _keys.Length);
+        Buffers.EnsureCapacity(ref _spareItems, _items.Length);
+    }
+
     /// <summary>
     /// Puts the items in the order <paramref name="order"/> gives (item k becomes the old item order[k]) and holds the
     /// first <paramref name="heldCount"/> of them. Rebuilds the table: done only when pairs fall asleep or wake.
     /// </summary>
     public void Permute(ReadOnlySpan<int> order, int heldCount)
     {
-        // The spare arrays as long as the live ones, so that swapping them never leaves a shorter array to grow.
-        Buffers.EnsureCapacity(ref _spareKeys, _keys.Length);
-        Buffers.EnsureCapacity(ref _spareItems, _items.Length);
+        ReserveSpare(); // as long as the live arrays, so that swapping them never leaves a shorter array to grow
         for (int k = 0; k < Count; k++)
         {
             _spareKeys[k] = _keys[order[k]];

@@ -23,6 +23,15 @@ internal sealed class Islands
     private int _freeCount;
     private int _idCount;
 
+    /// <summary>Grows every array to hold <paramref name="bodies"/> bodies (each in an island of its own at most).</summary>
+    public void Reserve(int bodies)
+    {
+        Buffers.EnsureCapacity(ref _parent, bodies);
+        Buffers.EnsureCapacity(ref _size, bodies);
+        Buffers.EnsureCapacity(ref _first, bodies);
+        Buffers.EnsureCapacity(ref _freeIds, bodies);
+    }
+
     /// <summary>Makes each of the first <paramref name="n"/> slots an island of its own.</summary>
     public void Reset(int n)
     {

@@ -185,6 +185,12 @@ public sealed partial class World
 
         LinkTouchesToBodies(touching);
         ReportSensorOverlaps(events);
+
+        // The scratch of RegroupSleepingTouches grows with the touching pairs, here, rather than in the step in
+        // which a large island first falls asleep.
+        Buffers.EnsureCapacity(ref _touchOrder, touching.Count);
+        Buffers.EnsureCapacity(ref _spareTouchContacts, _touchContacts.Length);
+        touching.ReserveSpare();
     }
 
     /// <summary>Threads each awake body's touching contacts into a list that <see cref="ContactsOf"/> walks.</summary>

@@ -426,6 +426,20 @@ public sealed partial class World
         }
     }
 
+    /// <summary>
+    /// Grows the per-body arrays of sleeping with the world, when a body is added, so that the step in which a large
+    /// island first falls asleep allocates as little as possible.
+    /// </summary>
+    private void ReserveSleepBuffers(int bodies)
+    {
+        _islands.Reserve(bodies);
+        Buffers.EnsureCapacity(ref _islandSleepTime, bodies);
+        Buffers.EnsureCapacity(ref _islandHeld, bodies);
+        Buffers.EnsureCapacity(ref _islandMoved, bodies);
+        Buffers.EnsureCapacity(ref _sleepingIslandOf, bodies);
+        Buffers.EnsureCapacity(ref _sleepers, bodies);
+    }
+
     private void AddAwake(RigidBody body)
     {
         Buffers.EnsureCapacity(ref _awake, _awakeCount + 1);

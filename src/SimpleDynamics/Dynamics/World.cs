@@ -182,6 +182,7 @@ public sealed partial class World
         body.World = this;
         _bodies[_bodyCount++] = body;
         AddAwake(body);
+        ReserveSleepBuffers(_bodies.Length);
         _bodiesVersion++;
         return body;
     }
