@@ -61,6 +61,14 @@ public sealed partial class World
         set
         {
             ThrowIfStepping(nameof(SleepingEnabled));
+            if (value && !_sleepingEnabled)
+            {
+                foreach (RigidBody body in AllBodies)
+                {
+                    body.sleepTime = 0; // rest is timed from now, not from before sleeping was turned off
+                }
+            }
+
             _sleepingEnabled = value;
             if (!value)
             {
