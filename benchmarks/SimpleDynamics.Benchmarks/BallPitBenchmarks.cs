@@ -79,6 +79,7 @@ internal sealed class BallPit
     {
         var solver = new SequentialImpulseSolver { ExtraIterations = extraIterations };
         World = Scenes.BallPit(n, _planar, responder: solver);
+        World.SleepingEnabled = false; // these time the awake pit; the Sleeping benchmark times it asleep
         int steps = Warm.Pour(World);
         WorldDiagnostics d = World.Diagnostics;
         _key = SceneRecord.Key(type, new[] { new KeyValuePair<string, object>("N", n), new KeyValuePair<string, object>("Extra", extraIterations) });

@@ -34,6 +34,7 @@ public class Broadphase
     public void Setup()
     {
         World world = Scenes.BallPit(N, planar: true, radiusSpread: RadiusSpread);
+        world.SleepingEnabled = false; // the same settled pit as before sleeping existed
         Warm.Pour(world);
         _bodies = world.Bodies.ToArray();
 

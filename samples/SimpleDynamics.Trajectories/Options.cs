@@ -28,6 +28,9 @@ public enum SceneKind
 
     /// <summary>A ball sliding on rough ground until it rolls.</summary>
     Slide,
+
+    /// <summary>Balls poured onto the ground beside a drain sensor: contact events and sleeping bodies per row.</summary>
+    Game,
 }
 
 /// <summary>The responders the sample can switch between.</summary>
@@ -117,6 +120,7 @@ public sealed class CommandLine
         ("pile", SceneKind.Pile, "100 discs settling in a closed box (table: a summary row per step)"),
         ("row", SceneKind.Row, "a row of touching balls struck at one end"),
         ("slide", SceneKind.Slide, "a ball sliding on rough ground that starts to roll"),
+        ("game", SceneKind.Game, "balls poured beside a drain sensor: contact events and sleeping bodies per row"),
     };
 
     private static readonly (string Name, ResponderKind Kind, string Help)[] s_responders =

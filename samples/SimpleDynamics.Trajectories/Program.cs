@@ -96,6 +96,7 @@ public static class Program
             {
                 scene.World.Step(scene.Dt);
                 summary.Observe(scene.World, step);
+                scene.Events.Observe(scene.World);
                 if (step % scene.Every == 0 || step == scene.Steps)
                 {
                     writer.WriteStep(scene, step);

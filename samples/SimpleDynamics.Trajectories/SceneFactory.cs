@@ -1,7 +1,9 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
+using System.Numerics;
 using SimpleDynamics.Bodies;
+using SimpleDynamics.Collision;
 using SimpleDynamics.Response;
 
 namespace SimpleDynamics.Trajectories;
@@ -20,6 +22,7 @@ namespace SimpleDynamics.Trajectories;
 /// <param name="Expectation">
 /// What classical mechanics predicts, if it says something simple and this responder does it; else null.
 /// </param>
+/// <param name="ShowEvents">The table prints, per row, the contact and sensor events since the row before.</param>
 public sealed record Scene(
     string Name,
     string Description,
@@ -31,7 +34,12 @@ public sealed record Scene(
     bool SummaryOnly,
     bool Planar,
     ResponderKind Responder,
-    Expectation? Expectation);
+    Expectation? Expectation,
+    bool ShowEvents = false)
+{
+    /// <summary>The world's events, collected step by step for the rows (see <see cref="EventLog"/>).</summary>
+    public EventLog Events { get; } = new(World, Labels);
+}
 
 /// <summary>
 /// Builds the sample's scenes from <see cref="Scenes"/> (the geometry the tests and benchmarks share) with the
@@ -58,6 +66,7 @@ public static class SceneFactory
             SceneKind.Pile => new[] { Pile(options) },
             SceneKind.Row => new[] { Row(options) },
             SceneKind.Slide => new[] { Slide(options) },
+            SceneKind.Game => new[] { Game(options) },
             _ => throw new ArgumentOutOfRangeException(nameof(options), options.Scene, "Unknown scene."),
         };
     }
@@ -207,8 +216,42 @@ public static class SceneFactory
         return Make("slide", description, world, new[] { "ball" }, options, steps: 150, rows: 50, summaryOnly: false, expectation);
     }
 
+    /// <summary>
+    /// A small game: twelve balls poured into a 3 m box, beside a drain (a static sensor in the right-hand corner);
+    /// the table prints the contact and sensor events of each row and how many balls sleep.
+    /// </summary>
+    private static Scene Game(Options options)
+    {
+        const int count = 12;
+        const float radius = 0.2f, width = 3f;
+        float e = options.Restitution ?? 0.3f;
+        float mu = options.Friction ?? 0.5f;
+        var world = new World(new Vector3(0, -Gravity, 0), CreateResponder(options.Responder, e, mu));
+        world.AddPlanes(StaticPlane.Box(Vector3.Zero, new Vector3(width, 4 * width, 0), planar: true));
+        var labels = new List<string>();
+        for (int i = 0; i < count; i++)
+        {
+            // Poured from the left, two columns, each ball a little higher and faster to the right than the last.
+            var position = new Vector3(0.4f + 0.5f * (i % 2), 1f + 0.45f * i, 0);
+            world.Add(new RigidBody(1f, radius, position, Inertia.Disc(1f, radius)) { LinearVelocity = new Vector3(0.4f + 0.1f * i, 0, 0) });
+            labels.Add(Invariant($"ball{i + 1}"));
+        }
+
+        RigidBody drain = world.Add(RigidBody.CreateStatic(0.5f, new Vector3(width, 0, 0)));
+        drain.IsSensor = true;
+        labels.Add("drain");
+        string description = Invariant(
+            $"{count} balls (r = {radius} m) poured into a {width} m box beside a drain sensor in the right-hand corner; eps = {e}, mu = {mu}, responder = {NameOf(options.Responder)}");
+        Expectation? expectation = options.Responder is ResponderKind.Solver && Duration(options, 600) >= 5
+            ? new Expectation("every ball comes to rest and falls asleep",
+                (scene, _) => scene.World.SleepingBodyCount == count ? null
+                    : Format.Invariant($"{scene.World.SleepingBodyCount} of {count} balls sleep at the end"))
+            : null;
+        return Make("game", description, world, labels, options, steps: 600, rows: 12, summaryOnly: true, expectation, showEvents: true);
+    }
+
     private static Scene Make(string name, string description, World world, IReadOnlyList<string> labels, Options options,
-        int steps, int rows, bool summaryOnly, Expectation? expectation)
+        int steps, int rows, bool summaryOnly, Expectation? expectation, bool showEvents = false)
     {
         int n = options.Steps ?? steps;
         if (options.Format is OutputFormat.Svg or OutputFormat.Html)
@@ -217,7 +260,7 @@ public static class SceneFactory
         }
 
         int every = options.Every ?? Math.Max(1, (int)Math.Round(n / (double)rows));
-        return new Scene(name, description, world, labels, n, options.Dt ?? DefaultDt, every, summaryOnly, Planar: true, options.Responder, expectation);
+        return new Scene(name, description, world, labels, n, options.Dt ?? DefaultDt, every, summaryOnly, Planar: true, options.Responder, expectation, showEvents);
     }
 
     /// <summary>The simulated time (s) of the run: the steps given or <paramref name="steps"/>, times dt.</summary>

@@ -41,6 +41,8 @@ public abstract class TrajectoryWriter
     /// <summary>
     /// The contacts whose bodies touch or overlap now, penetration ≥ 0, measured from the bodies' positions after
     /// the step. Detection also reports speculative pairs that may touch within the next step; they are not counted.
+    /// Pairs of sleeping bodies are not detected (they are not in <see cref="World.Collisions"/>): they are taken from
+    /// <see cref="SimpleDynamics.Collision.ContactEvents.Touching"/> and counted by the same rule.
     /// </summary>
     public static int TouchingContacts(World world)
     {
@@ -50,6 +52,18 @@ public abstract class TrajectoryWriter
             if (Penetration(world, contact) >= 0)
             {
                 count++;
+            }
+        }
+
+        foreach (SimpleDynamics.Collision.ContactEvent pair in world.ContactEvents.Touching)
+        {
+            if (!pair.BodyA.IsAwake || pair.BodyB is { IsAwake: false })
+            {
+                RigidBody a = pair.BodyA;
+                float penetration = pair.BodyB is RigidBody b
+                    ? a.Radius + b.Radius - Vector3.Distance(a.Position, b.Position)
+                    : a.Radius - world.Planes[pair.PlaneIndex].DistanceTo(a.Position);
+                count += penetration >= 0 ? 1 : 0;
             }
         }
 
@@ -142,6 +156,10 @@ public sealed class TableTrajectoryWriter : TrajectoryWriter
             ? "# per row: the dynamic bodies' centre of mass (m), its velocity (m/s), their largest speed (m/s); then the diagnostics"
             : "# per row: position (m), velocity (m/s), angular velocity (rad/s); on each step's first line the diagnostics");
         _out.WriteLine("# diagnostics: KE, PE, E = kinetic, potential, mechanical energy (J); p = linear momentum (kg m/s); contacts = touching pairs; max pen = largest penetration (m)");
+        if (scene.ShowEvents)
+        {
+            _out.WriteLine("# asleep = sleeping bodies; under each row the contact events since the row before (begin and end touching, hits of 1 m/s or more) and the drain sensor's");
+        }
         if (scene.Expectation is not null)
         {
             _out.WriteLine($"# expect: {scene.Expectation.Text}");
@@ -164,6 +182,11 @@ public sealed class TableTrajectoryWriter : TrajectoryWriter
         }
 
         header.Append(Pad("contacts", Width)).Append(Pad("max pen", Width + 1));
+        if (scene.ShowEvents)
+        {
+            header.Append(Pad("asleep", Width));
+        }
+
         _out.WriteLine(header.ToString());
     }
 
@@ -182,7 +205,14 @@ public sealed class TableTrajectoryWriter : TrajectoryWriter
             Append(line, position, scene.Planar);
             Append(line, velocity, scene.Planar);
             line.Append(Pad(Fixed(maxSpeed, 3), Width));
-            _out.WriteLine(line.Append(diagnostics).ToString());
+            line.Append(diagnostics);
+            if (scene.ShowEvents)
+            {
+                line.Append(Pad(world.SleepingBodyCount.ToString(CultureInfo.InvariantCulture), Width));
+            }
+
+            _out.WriteLine(line.ToString());
+            WriteEvents(scene, step);
             return;
         }
 
@@ -232,6 +262,20 @@ public sealed class TableTrajectoryWriter : TrajectoryWriter
         foreach (string warning in warnings)
         {
             _out.WriteLine("# warning: " + warning);
+        }
+    }
+
+    /// <summary>The events since the last row, as comment lines under it (scenes that show events, after step 0).</summary>
+    private void WriteEvents(Scene scene, int step)
+    {
+        if (!scene.ShowEvents || step == 0)
+        {
+            return;
+        }
+
+        foreach (string line in scene.Events.TakeRow())
+        {
+            _out.WriteLine("#          " + line);
         }
     }
 
@@ -326,6 +370,7 @@ public sealed class CsvTrajectoryWriter : TrajectoryWriter
     {
         "scene", "step", "time", "body", "x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz",
         "kinetic", "potential", "mechanical", "px", "py", "pz", "contacts", "max_penetration",
+        "asleep", "begin_touch", "end_touch", "hits",
     };
 
     private readonly System.IO.TextWriter _out;
@@ -350,8 +395,12 @@ public sealed class CsvTrajectoryWriter : TrajectoryWriter
         World world = scene.World;
         WorldDiagnostics d = world.Diagnostics;
         string prefix = string.Join(",", scene.Name, step.ToString(CultureInfo.InvariantCulture), Number(world.Time));
+        // Event counts since the last row (a row may stand for several steps).
+        EventLog events = scene.Events;
+        string counts = string.Join(",", Count(world.SleepingBodyCount), Count(events.Begins), Count(events.Ends), Count(events.Hits));
+        events.TakeRow();
         string diagnostics = string.Join(",", Number(d.KineticEnergy), Number(d.PotentialEnergy), Number(d.MechanicalEnergy),
-            Vector(d.LinearMomentum), TouchingContacts(world).ToString(CultureInfo.InvariantCulture), Number(d.MaxPenetration));
+            Vector(d.LinearMomentum), TouchingContacts(world).ToString(CultureInfo.InvariantCulture), Number(d.MaxPenetration), counts);
         if (scene.SummaryOnly)
         {
             var (position, velocity, spin, _, _) = CentreOfMass(world);
@@ -374,6 +423,8 @@ public sealed class CsvTrajectoryWriter : TrajectoryWriter
     }
 
     private static string Vector(Vector3 v) => string.Join(",", Number(v.X), Number(v.Y), Number(v.Z));
+
+    private static string Count(int value) => value.ToString(CultureInfo.InvariantCulture);
 
     /// <summary>
     /// The one number format (<see cref="Trajectories.Format.Number"/>). World.Time sums float steps, so 3 × 0.01f

@@ -28,7 +28,11 @@ public sealed partial class RigidBody
     public CollisionFilter Filter
     {
         get => filter;
-        set => filter = value;
+        set
+        {
+            filter = value;
+            WakeIfAsleep();
+        }
     }
 
     /// <summary>
@@ -45,6 +49,10 @@ public sealed partial class RigidBody
     public bool IsSensor
     {
         get => isSensor;
-        set => isSensor = value;
+        set
+        {
+            isSensor = value;
+            WakeIfAsleep();
+        }
     }
 }

@@ -48,7 +48,10 @@ public sealed partial class RigidBody
     internal float? restitution;
     internal float? friction;
 
-    /// <summary>The body's slot in its world's body array, or -1 when it is in no world.</summary>
+    /// <summary>
+    /// The body's slot among the awake bodies its world steps (<see cref="StepContext.Bodies"/>), or -1 when it
+    /// sleeps or is in no world; the solver and the impact pass index their working arrays by it.
+    /// </summary>
     internal int index = -1;
 
     /// <summary>
@@ -152,6 +155,7 @@ public sealed partial class RigidBody
         {
             Guard.Positive(value, nameof(Radius));
             radius = value;
+            WakeIfAsleep();
         }
     }
 
@@ -163,6 +167,7 @@ public sealed partial class RigidBody
         {
             Guard.Finite(value, nameof(Position));
             position = value;
+            WakeIfAsleep();
         }
     }
 
@@ -183,6 +188,7 @@ public sealed partial class RigidBody
 
             orientation = unit;
             UpdateInverseInertiaWorld();
+            WakeIfAsleep();
         }
     }
 
@@ -196,6 +202,7 @@ public sealed partial class RigidBody
             Guard.Finite(value, nameof(LinearVelocity));
             ThrowIfStaticAndMoving(value, nameof(LinearVelocity));
             linearVelocity = value;
+            WakeIfAsleep();
         }
     }
 
@@ -209,6 +216,7 @@ public sealed partial class RigidBody
             Guard.Finite(value, nameof(AngularVelocity));
             ThrowIfStaticAndMoving(value, nameof(AngularVelocity));
             angularVelocity = value;
+            WakeIfAsleep();
         }
     }
 
@@ -272,6 +280,7 @@ public sealed partial class RigidBody
         }
 
         SetMassValidated(mass, inverse, inertia, inverseOfInertia);
+        WakeIfAsleep();
     }
 
     /// <summary>Adds a force (N) through the centre of mass, applied during the next step.</summary>
@@ -281,6 +290,7 @@ public sealed partial class RigidBody
     {
         Guard.Finite(force, nameof(force));
         this.force = AccumulatedForce(force);
+        WakeIfAsleep();
     }
 
     /// <summary>Adds a force (N) at a world point; it also adds the torque (point − c) × F.</summary>
@@ -295,6 +305,7 @@ public sealed partial class RigidBody
         Vector3 newTorque = AccumulatedTorque(Vector3.Cross(arm, force), nameof(force));
         this.force = newForce;
         torque = newTorque;
+        WakeIfAsleep();
     }
 
     /// <summary>Adds a torque (N·m, world frame), applied during the next step.</summary>
@@ -304,6 +315,7 @@ public sealed partial class RigidBody
     {
         Guard.Finite(torque, nameof(torque));
         this.torque = AccumulatedTorque(torque, nameof(torque));
+        WakeIfAsleep();
     }
 
     /// <summary>
@@ -329,6 +341,7 @@ public sealed partial class RigidBody
 
         linearVelocity = newLinear;
         angularVelocity = newAngular;
+        WakeIfAsleep();
     }
 
     /// <summary>Velocity of the material point at a world position: v + ω × (p − c) (eq. 12–13).</summary>

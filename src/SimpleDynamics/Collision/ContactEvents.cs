@@ -14,8 +14,10 @@ namespace SimpleDynamics.Collision;
 /// <see cref="World.ContactMargin"/>) do not touch. <see cref="BeginTouch"/> lists the pairs that touch now and
 /// did not after the previous step, <see cref="EndTouch"/> those that did and do not now (also when a body
 /// was removed). So over any run, every end follows its begin, and the begins so far minus the ends so far
-/// equal <see cref="Touching"/>.Length. Begins, hits and <see cref="Touching"/> come in the order of
-/// <see cref="World.Collisions"/>, ends in the order the pairs touched in the step before.
+/// equal <see cref="Touching"/>.Length. Begins and hits come in the order of <see cref="World.Collisions"/>, ends in
+/// the order the pairs touched in the step before. <see cref="Touching"/> lists first the pairs of sleeping bodies
+/// (see <see cref="World.SleepingEnabled"/>), which stay touching while they sleep and neither end when they fall
+/// asleep nor begin again when they wake, then the pairs of awake bodies in the order of <see cref="World.Collisions"/>.
 /// </remarks>
 public sealed class ContactEvents
 {

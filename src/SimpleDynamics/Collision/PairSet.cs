@@ -7,6 +7,11 @@ namespace SimpleDynamics.Collision;
 /// an open-addressing hash set (linear probing) over a dense list. Both arrays are kept and only grow, so a
 /// warm world allocates nothing here; comparing this step's set with last step's yields the begin and end events.
 /// </summary>
+/// <remarks>
+/// The first <see cref="HeldCount"/> items are held: the pairs of sleeping bodies, which stay touching from step to
+/// step without being found again. <see cref="TruncateTo"/> drops the rest in time proportional to what it drops, so
+/// a step of a world that mostly sleeps costs nothing for the held pairs.
+/// </remarks>
 internal sealed class PairSet<T>
     where T : struct
 {
@@ -19,7 +24,14 @@ internal sealed class PairSet<T>
     private int[] _slots = new int[2 * InitialCapacity];
     private ShrinkPolicy _room;
 
+    // Spare arrays Permute writes into, then swaps with the live ones.
+    private ulong[] _spareKeys = new ulong[InitialCapacity];
+    private T[] _spareItems = new T[InitialCapacity];
+
     public int Count { get; private set; }
+
+    /// <summary>How many items at the front are held (kept by <see cref="TruncateTo"/>); set by <see cref="Permute"/>.</summary>
+    public int HeldCount { get; private set; }
 
     /// <summary>The items in the order they were added.</summary>
     public ReadOnlySpan<T> Items => _items.AsSpan(0, Count);
@@ -76,6 +88,13 @@ internal sealed class PairSet<T>
     /// <summary>Empties the set and keeps its storage.</summary>
     public void Clear()
     {
+        HeldCount = 0;
+        if (8 * Count < _slots.Length)
+        {
+            TruncateTo(0); // a few items in a large table: remove them one by one rather than clear the table
+            return;
+        }
+
         Array.Clear(_items, 0, Count); // drop body references so removed bodies can be collected
         Array.Clear(_slots, 0, _slots.Length);
         Count = 0;
@@ -100,6 +119,78 @@ internal sealed class PairSet<T>
         }
     }
 
+    /// <summary>Removes the items from <paramref name="count"/> on (not below <see cref="HeldCount"/>), last first.</summary>
+    public void TruncateTo(int count)
+    {
+        int mask = _slots.Length - 1;
+        for (int i = Count - 1; i >= count; i--)
+        {
+            int h = Home(_keys[i], mask);
+            while (_slots[h] != i + 1)
+            {
+                h = (h + 1) & mask;
+            }
+
+            // Backward-shift deletion (Knuth 6.4, algorithm R): move up each later entry of the probe run whose home
+            // does not lie cyclically in (h, j], so that no lookup meets a hole before finding its key.
+            for (int j = (h + 1) & mask; _slots[j] != 0; j = (j + 1) & mask)
+            {
+                int home = Home(_keys[_slots[j] - 1], mask);
+                bool stays = h <= j ? h < home && home <= j : h < home || home <= j;
+                if (!stays)
+                {
+                    _slots[h] = _slots[j];
+                    h = j;
+                }
+            }
+
+            _slots[h] = 0;
+            _items[i] = default;
+        }
+
+        Count = Math.Min(Count, count);
+        HeldCount = Math.Min(HeldCount, Count);
+    }
+
+    /// <summary>Grows the spare arrays of <see cref="Permute"/> to the live ones' length.</summary>
+    public void ReserveSpare()
+    {
+        Buffers.EnsureCapacity(ref _spareKeys, _keys.Length);
+        Buffers.EnsureCapacity(ref _spareItems, _items.Length);
+    }
+
+    /// <summary>
+    /// Puts the items in the order <paramref name="order"/> gives (item k becomes the old item order[k]) and holds the
+    /// first <paramref name="heldCount"/> of them. Rebuilds the table: done only when pairs fall asleep or wake.
+    /// </summary>
+    public void Permute(ReadOnlySpan<int> order, int heldCount)
+    {
+        ReserveSpare(); // as long as the live arrays, so that swapping them never leaves a shorter array to grow
+        for (int k = 0; k < Count; k++)
+        {
+            _spareKeys[k] = _keys[order[k]];
+            _spareItems[k] = _items[order[k]];
+        }
+
+        (_keys, _spareKeys) = (_spareKeys, _keys);
+        (_items, _spareItems) = (_spareItems, _items);
+        Array.Clear(_spareItems, 0, Count);
+        Array.Clear(_slots, 0, _slots.Length);
+        int mask = _slots.Length - 1;
+        for (int i = 0; i < Count; i++)
+        {
+            int h = Home(_keys[i], mask);
+            while (_slots[h] != 0)
+            {
+                h = (h + 1) & mask;
+            }
+
+            _slots[h] = i + 1;
+        }
+
+        HeldCount = heldCount;
+    }
+
     /// <summary>The key of a pair of bodies, whichever order they come in.</summary>
     public static ulong BodyPairKey(int idA, int idB) =>
         idA < idB ? ((ulong)(uint)idA << 32) | (uint)idB : ((ulong)(uint)idB << 32) | (uint)idA;
@@ -115,6 +206,8 @@ internal sealed class PairSet<T>
     {
         Buffers.ShrinkTo(ref _keys, capacity, Count);
         Buffers.ShrinkTo(ref _items, capacity, Count);
+        Buffers.ShrinkTo(ref _spareKeys, capacity, 0);
+        Buffers.ShrinkTo(ref _spareItems, capacity, 0);
         int slots = 2 * InitialCapacity;
         while (slots < 2 * capacity)
         {

@@ -40,7 +40,10 @@ public sealed class StepContext
     /// <summary>The world being stepped.</summary>
     public World World { get; }
 
-    /// <summary>The world's bodies, in the world's order.</summary>
+    /// <summary>
+    /// The world's awake bodies: all of them, in the world's order, while none sleeps (see
+    /// <see cref="World.SleepingEnabled"/>); sleeping bodies take no part in a step.
+    /// </summary>
     public ReadOnlySpan<RigidBody> Bodies => World.BodySpan;
 
     /// <summary>The world's static planes; <see cref="Contact.PlaneIndex"/> indexes them.</summary>

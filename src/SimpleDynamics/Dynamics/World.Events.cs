@@ -16,14 +16,21 @@ public sealed partial class World
     private const int InitialTouchCapacity = 16;
 
     private readonly ContactEvents _contactEvents = new();
-    private PairSet<ContactEvent> _previousTouch = new();
+    private PairSet<ContactEvent> _previousTouch = new(); // the awake pairs touching after the step before
     private PairSet<SensorEvent> _previousSensor = new();
 
-    // The touching contacts of the last step, in the order of ContactEvents.Touching; each body's touching
-    // contacts form a linked list through _nextTouch (node 2k for body A of contact k, 2k + 1 for body B).
+    // The touching contacts, in the order of ContactEvents.Touching: first the held pairs of sleeping bodies, then
+    // the pairs of awake bodies found in the last step. Each body's touching contacts form a linked list through
+    // _nextTouch (node 2k for body A of contact k, 2k + 1 for body B): an awake body's list, rebuilt every step,
+    // starts at firstTouch; a sleeping body's, rebuilt when bodies fall asleep or wake, at firstSleepTouch.
     private Contact[] _touchContacts = new Contact[InitialTouchCapacity];
+    private int _touchContactsUsed;
     private int[] _nextTouch = new int[2 * InitialTouchCapacity];
     private long _touchStamp;
+    private long _sleepTouchStamp;
+    private bool _touchesRegrouped = true;
+    private int[] _touchOrder = new int[InitialTouchCapacity];
+    private Contact[] _spareTouchContacts = new Contact[InitialTouchCapacity];
     private ShrinkPolicy _touchRoom;
 
     private float _touchTolerance = 1e-4f;
@@ -69,7 +76,8 @@ public sealed partial class World
     /// empty span to count them, or a larger buffer when the count exceeds the one given. Allocates nothing.
     /// </summary>
     /// <remarks>
-    /// The contacts are copies of those in <see cref="Collisions"/>; the body may be either
+    /// The contacts are copies of those in <see cref="Collisions"/> (for a sleeping body, of the step it fell
+    /// asleep in); the body may be either
     /// <see cref="Contact.BodyA"/> or <see cref="Contact.BodyB"/>, and the normal points from B to A, so flip
     /// it when the body is B. A body added since the last step, or not in this world, has none.
     /// </remarks>
@@ -77,13 +85,29 @@ public sealed partial class World
     public int ContactsOf(RigidBody body, Span<Contact> contacts)
     {
         Guard.NotNull(body, nameof(body));
-        if (body.World != this || _touchStamp == 0 || body.touchStamp != _touchStamp)
+        if (body.World != this)
         {
             return 0;
         }
 
+        // A static body may touch both awake and sleeping bodies; any other body is on one list only.
         int count = 0;
-        for (int node = body.firstTouch; node >= 0; node = _nextTouch[node])
+        if (_touchStamp != 0 && body.touchStamp == _touchStamp)
+        {
+            count = CopyTouches(body.firstTouch, contacts, count);
+        }
+
+        if (_sleepTouchStamp != 0 && body.sleepTouchStamp == _sleepTouchStamp)
+        {
+            count = CopyTouches(body.firstSleepTouch, contacts, count);
+        }
+
+        return count;
+    }
+
+    private int CopyTouches(int first, Span<Contact> contacts, int count)
+    {
+        for (int node = first; node >= 0; node = _nextTouch[node])
         {
             if (count < contacts.Length)
             {
@@ -106,12 +130,18 @@ public sealed partial class World
         ContactEvents events = _contactEvents;
         events.Clear();
 
-        // Last step's set becomes "previous"; the older one is emptied and refilled as this step's.
-        PairSet<ContactEvent> previous = events.Touch;
-        PairSet<ContactEvent> touching = _previousTouch;
-        touching.Clear();
-        events.Touch = touching;
-        _previousTouch = previous;
+        // Last step's awake pairs become "previous"; the held pairs of sleeping bodies stay as they are, unseen, so
+        // a pile that sleeps costs nothing here and neither ends nor begins touching.
+        PairSet<ContactEvent> touching = events.Touch;
+        PairSet<ContactEvent> previous = _previousTouch;
+        previous.Clear();
+        ReadOnlySpan<ContactEvent> items = touching.Items;
+        for (int i = touching.HeldCount; i < items.Length; i++)
+        {
+            previous.Add(touching.KeyAt(i), items[i]);
+        }
+
+        touching.TruncateTo(touching.HeldCount);
 
         foreach (ref readonly Contact contact in Collisions.Contacts)
         {
@@ -158,19 +188,30 @@ public sealed partial class World
 
         LinkTouchesToBodies(touching);
         ReportSensorOverlaps(events);
+
+        // The scratch of RegroupSleepingTouches grows with the touching pairs, here, rather than in the step in
+        // which a large island first falls asleep.
+        Buffers.EnsureCapacity(ref _touchOrder, touching.Count);
+        Buffers.EnsureCapacity(ref _spareTouchContacts, _touchContacts.Length);
+        touching.ReserveSpare();
     }
 
-    /// <summary>Threads each body's touching contacts into a list that <see cref="ContactsOf"/> walks.</summary>
+    /// <summary>Threads each awake body's touching contacts into a list that <see cref="ContactsOf"/> walks.</summary>
     private void LinkTouchesToBodies(PairSet<ContactEvent> touching)
     {
         // Drop references to bodies of earlier steps so removed bodies can be collected.
-        Array.Clear(_touchContacts, touching.Count, _touchContacts.Length - touching.Count);
+        if (_touchContactsUsed > touching.Count)
+        {
+            Array.Clear(_touchContacts, touching.Count, _touchContactsUsed - touching.Count);
+        }
+
+        _touchContactsUsed = touching.Count;
         _touchStamp = Interlocked.Increment(ref s_lastTouchStamp);
         Buffers.EnsureCapacity(ref _nextTouch, 2 * touching.Count);
         ReadOnlySpan<ContactEvent> pairs = touching.Items;
 
         // Backwards, so that each list comes out in the order of the contacts.
-        for (int k = pairs.Length - 1; k >= 0; k--)
+        for (int k = pairs.Length - 1; k >= touching.HeldCount; k--)
         {
             Link(pairs[k].BodyA, 2 * k);
             if (pairs[k].BodyB is RigidBody bodyB)
@@ -190,6 +231,84 @@ public sealed partial class World
 
         _nextTouch[node] = body.firstTouch;
         body.firstTouch = node;
+    }
+
+    /// <summary>
+    /// After bodies fell asleep or woke: puts the touching pairs with a sleeping body first and holds them (they
+    /// stay touching, unseen, while their bodies sleep), the rest after, and links both kinds to their bodies again.
+    /// Costs one pass over the touching pairs, only when the set of sleeping bodies changed.
+    /// </summary>
+    private void RegroupSleepingTouches()
+    {
+        if (_touchesRegrouped)
+        {
+            return;
+        }
+
+        _touchesRegrouped = true;
+        PairSet<ContactEvent> touching = _contactEvents.Touch;
+        ReadOnlySpan<ContactEvent> pairs = touching.Items;
+        int count = pairs.Length, held = 0;
+        Buffers.EnsureCapacity(ref _touchOrder, count);
+        for (int k = 0; k < count; k++)
+        {
+            if (!pairs[k].BodyA.IsAwake || pairs[k].BodyB is { IsAwake: false })
+            {
+                _touchOrder[held++] = k;
+            }
+        }
+
+        int next = held;
+        for (int k = 0; k < count; k++)
+        {
+            if (pairs[k].BodyA.IsAwake && pairs[k].BodyB is null or { IsAwake: true })
+            {
+                _touchOrder[next++] = k;
+            }
+        }
+
+        touching.Permute(_touchOrder.AsSpan(0, count), held);
+        Buffers.EnsureCapacity(ref _spareTouchContacts, _touchContacts.Length); // as long, so the swap never shrinks
+        for (int k = 0; k < count; k++)
+        {
+            _spareTouchContacts[k] = _touchContacts[_touchOrder[k]];
+        }
+
+        (_touchContacts, _spareTouchContacts) = (_spareTouchContacts, _touchContacts);
+        Array.Clear(_spareTouchContacts, 0, Math.Max(count, _touchContactsUsed));
+        if (_touchContactsUsed > count)
+        {
+            Array.Clear(_touchContacts, count, _touchContactsUsed - count);
+        }
+
+        _touchContactsUsed = count;
+
+        // The held pairs' lists, backwards so that each comes out in order; then the awake pairs' lists.
+        _sleepTouchStamp = Interlocked.Increment(ref s_lastTouchStamp);
+        Buffers.EnsureCapacity(ref _nextTouch, 2 * count);
+        pairs = touching.Items;
+        for (int k = held - 1; k >= 0; k--)
+        {
+            LinkAsleep(pairs[k].BodyA, 2 * k);
+            if (pairs[k].BodyB is RigidBody bodyB)
+            {
+                LinkAsleep(bodyB, 2 * k + 1);
+            }
+        }
+
+        LinkTouchesToBodies(touching);
+    }
+
+    private void LinkAsleep(RigidBody body, int node)
+    {
+        if (body.sleepTouchStamp != _sleepTouchStamp)
+        {
+            body.sleepTouchStamp = _sleepTouchStamp;
+            body.firstSleepTouch = -1;
+        }
+
+        _nextTouch[node] = body.firstSleepTouch;
+        body.firstSleepTouch = node;
     }
 
     /// <summary>
@@ -262,6 +381,8 @@ public sealed partial class World
         {
             Buffers.ShrinkTo(ref _touchContacts, room, touching);
             Buffers.ShrinkTo(ref _nextTouch, 2 * room, 2 * touching);
+            Buffers.ShrinkTo(ref _spareTouchContacts, room, 0);
+            Buffers.ShrinkTo(ref _touchOrder, room, 0);
         }
 
         _contactEvents.ShrinkIfIdle();
@@ -275,6 +396,8 @@ public sealed partial class World
         int touching = _contactEvents.Touch.Count;
         Buffers.Shrink(ref _touchContacts, Math.Max(touching, InitialTouchCapacity));
         Buffers.Shrink(ref _nextTouch, 2 * Math.Max(touching, InitialTouchCapacity));
+        Buffers.Shrink(ref _spareTouchContacts, Math.Max(touching, InitialTouchCapacity));
+        Buffers.Shrink(ref _touchOrder, Math.Max(touching, InitialTouchCapacity));
         _contactEvents.TrimExcess();
         _previousTouch.Clear();
         _previousTouch.TrimExcess();

@@ -10,6 +10,7 @@ public sealed partial class World
     private const int InitialBodyCapacity = 16;
 
     private ShrinkPolicy _bodyRoom;
+    private ShrinkPolicy _awakeRoom;
 
     /// <summary>
     /// Releases the spare room of the world's working arrays (bodies, planes, <see cref="Collisions"/>, the contact
@@ -27,6 +28,7 @@ public sealed partial class World
     {
         ThrowIfStepping(nameof(TrimExcess));
         Buffers.Shrink(ref _bodies, _bodyCount);
+        Buffers.Shrink(ref _awake, _awakeCount);
         Buffers.Shrink(ref _planes, _planeCount);
         Collisions.TrimExcess();
         TrimEventBuffers();
@@ -43,6 +45,7 @@ public sealed partial class World
     private void ShrinkIdleBuffers()
     {
         Buffers.ShrinkIfIdle(ref _bodies, _bodyCount, ref _bodyRoom, InitialBodyCapacity);
+        Buffers.ShrinkIfIdle(ref _awake, _awakeCount, ref _awakeRoom, InitialBodyCapacity);
         Collisions.ShrinkIfIdle();
         _impacts.ShrinkIfIdle(_bodyCount, Collisions.Count);
         ShrinkIdleEventBuffers();

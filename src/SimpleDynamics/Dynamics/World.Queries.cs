@@ -211,7 +211,7 @@ public sealed partial class World
     {
         if (_queryGrid.Version != _queryVersion || _queryGrid.BodyCount != _bodyCount)
         {
-            _queryGrid.Build(BodySpan, _queryVersion);
+            _queryGrid.Build(AllBodies, _queryVersion);
         }
 
         return _queryGrid;

@@ -17,6 +17,8 @@ public sealed partial class World
     /// <remarks>
     /// The pipeline, each stage named below:
     /// <list type="number">
+    /// <item>wake the sleeping islands that awake bodies touch or close on (<see cref="SleepingEnabled"/>); the
+    ///   stages below see the awake bodies only;</item>
     /// <item>detect: bounding circles against each other and against the planes (§2.1), including every pair that
     ///   may touch within the step at the speeds the bodies have (see <see cref="ContactMargin"/>);</item>
     /// <item>the responder's <see cref="ICollisionResponder.BeginStep"/>;</item>
@@ -27,8 +29,9 @@ public sealed partial class World
     ///   <see cref="ICollisionResponder.Collide"/>, see below),
     ///   measure the contacts, and the responder's <see cref="ICollisionResponder.SolvePositions"/> (listing 2);</item>
     /// <item>the responder's <see cref="ICollisionResponder.EndStep"/>, then measure the contacts for
-    ///   <see cref="Collisions"/>, report the contact events (<see cref="ContactEvents"/>), clear the forces, and shrink working arrays that have
-    ///   long been far larger than needed (see <see cref="TrimExcess"/>).</item>
+    ///   <see cref="Collisions"/>, report the contact events (<see cref="ContactEvents"/>) and clear the forces;</item>
+    /// <item>put to sleep the islands that have rested long enough, and shrink working arrays that have long been far
+    ///   larger than needed (see <see cref="TrimExcess"/>).</item>
     /// </list>
     /// <para><b>Collisions at their time of impact.</b> Within a substep each body's velocity goes uniformly from
     /// where it started to where gravity, forces and resting contacts take it, which is exact for free flight. Two
@@ -58,6 +61,7 @@ public sealed partial class World
         try
         {
             step.Begin(dt, _substeps);
+            WakeWhatAwakeBodiesReach(dt);
             DetectCollisions(dt);
             Run(step, StepStage.BeginStep);
             float h = dt / _substeps;
@@ -75,6 +79,7 @@ public sealed partial class World
             MeasureContacts();
             ReportContactEvents();
             ClearForces();
+            UpdateSleep(dt);
             ShrinkIdleBuffers();
             Time += dt;
         }

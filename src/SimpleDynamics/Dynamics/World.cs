@@ -75,6 +75,11 @@ public sealed partial class World
         set
         {
             Guard.Finite(value, nameof(Gravity));
+            if (value != _gravity)
+            {
+                WakeAll(); // a pile at rest under the old gravity is not at rest under the new one
+            }
+
             _gravity = value;
         }
     }
@@ -137,7 +142,9 @@ public sealed partial class World
     }
 
     /// <summary>
-    /// The contacts of the last step, measured at the end of it, less those naming a body removed since.
+    /// The contacts of the last step, measured at the end of it, less those naming a body removed since. Sleeping
+    /// bodies take no part in a step, so their contacts are not here; their touching pairs stay in
+    /// <see cref="ContactEvents"/> (<see cref="Collision.ContactEvents.Touching"/>, <see cref="ContactsOf"/>).
     /// </summary>
     public CollisionData Collisions { get; }
 
@@ -153,7 +160,11 @@ public sealed partial class World
     /// <summary>Simulated time so far (s).</summary>
     public double Time { get; private set; }
 
-    internal ReadOnlySpan<RigidBody> BodySpan => _bodies.AsSpan(0, _bodyCount);
+    /// <summary>The bodies each step works on: the awake ones (all of them while none sleeps), in slots <c>index</c>.</summary>
+    internal ReadOnlySpan<RigidBody> BodySpan => AwakeSpan;
+
+    /// <summary>Every body, awake or asleep, in the order of <see cref="Bodies"/>.</summary>
+    internal ReadOnlySpan<RigidBody> AllBodies => _bodies.AsSpan(0, _bodyCount);
 
     /// <summary>Adds a body and returns it.</summary>
     /// <exception cref="ArgumentNullException"><paramref name="body"/> is null.</exception>
@@ -169,9 +180,11 @@ public sealed partial class World
 
         ThrowIfStepping(nameof(Add));
         Buffers.EnsureCapacity(ref _bodies, _bodyCount + 1);
-        body.index = _bodyCount;
+        body.worldSlot = _bodyCount;
         body.World = this;
         _bodies[_bodyCount++] = body;
+        AddAwake(body);
+        ReserveSleepBuffers(_bodies.Length);
         _bodiesVersion++;
         return body;
     }
@@ -191,12 +204,14 @@ public sealed partial class World
             return false;
         }
 
-        int slot = body.index;
+        WakeWhatRestsOn(body);
+        RemoveAwake(body);
+        int slot = body.worldSlot;
         RigidBody last = _bodies[--_bodyCount];
         _bodies[slot] = last;
-        last.index = slot;
+        last.worldSlot = slot;
         _bodies[_bodyCount] = null!;
-        body.index = -1;
+        body.worldSlot = -1;
         body.World = null;
         _bodiesVersion++;
         // The contacts are dropped when Collisions is next read: one pass for however many removals.
@@ -213,6 +228,7 @@ public sealed partial class World
         ThrowIfStepping(nameof(AddPlane));
         Buffers.EnsureCapacity(ref _planes, _planeCount + 1);
         _planes[_planeCount++] = plane;
+        WakeAll(); // the plane may cut through sleeping bodies
     }
 
     /// <summary>
@@ -236,6 +252,7 @@ public sealed partial class World
         Buffers.EnsureCapacity(ref _planes, _planeCount + list.Count);
         list.CopyTo(_planes, _planeCount);
         _planeCount += list.Count;
+        WakeAll(); // the planes may cut through sleeping bodies
     }
 
     private static void ValidatePlane(in StaticPlane plane, string paramName)

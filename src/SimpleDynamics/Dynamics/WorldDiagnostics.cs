@@ -127,7 +127,7 @@ public sealed partial class World
         Guard.Finite(point, nameof(point));
         double kinetic = 0, potential = 0;
         Vector3 linear = Vector3.Zero, angular = Vector3.Zero;
-        foreach (RigidBody body in BodySpan)
+        foreach (RigidBody body in AllBodies)
         {
             if (!body.IsDynamic)
             {

@@ -80,6 +80,11 @@ internal sealed class ContactCache
         private int _mask = InitialSlots - 1;
         private int _count;
 
+        // The slots Set filled since the last Reset, so that a table that once held a whole pit and now holds a
+        // few awake contacts (the rest asleep) is emptied in proportion to what it holds, not to its size.
+        private int[] _used = new int[InitialSlots];
+        private int _usedCount;
+
         /// <summary>The contacts a new table holds (half its slots).</summary>
         public const int InitialRoom = InitialSlots / 2;
 
@@ -102,11 +107,19 @@ internal sealed class ContactCache
             {
                 _entries = new Entry[target];
             }
+            else if (8 * _usedCount < _entries.Length)
+            {
+                for (int i = 0; i < _usedCount; i++)
+                {
+                    _entries[_used[i]] = default;
+                }
+            }
             else
             {
                 Array.Clear(_entries, 0, _entries.Length);
             }
 
+            _usedCount = 0;
             _mask = _entries.Length - 1;
             _count = 0;
         }
@@ -122,6 +135,8 @@ internal sealed class ContactCache
             if (!_entries[slot].Occupied)
             {
                 _count++;
+                Buffers.EnsureCapacity(ref _used, _usedCount + 1);
+                _used[_usedCount++] = slot;
             }
 
             _entries[slot] = new Entry { Key = key, Occupied = true, Normal = normal, Friction = friction };

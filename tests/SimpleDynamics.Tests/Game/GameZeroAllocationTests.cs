@@ -23,6 +23,7 @@ public class GameZeroAllocationTests
     public void A_warm_pile_with_events_sensors_filters_and_queries_allocates_nothing(bool planar)
     {
         World world = Scenes.BallPit(1000, planar, seed: 4);
+        world.SleepingEnabled = false; // the pile must stay awake to make events; sleeping's own allocations: SleepingTests
         world.HitSpeedThreshold = 0.1f;
         RigidBody sensor = world.Add(RigidBody.CreateStatic(0.5f, world.Bodies[0].Position));
         sensor.IsSensor = true;

@@ -394,6 +394,46 @@ public class TrajectorySampleTests
         return (code, stdout.ToString(), stderr.ToString());
     }
 
+    [Fact]
+    public void The_game_scene_prints_the_events_of_each_row_and_the_balls_falling_asleep()
+    {
+        var (code, stdout, stderr) = Run("--scene", "game");
+
+        Assert.Equal(0, code);
+        Assert.Equal(string.Empty, stderr); // no warning: the expectation "every ball falls asleep" holds
+        Assert.Contains("# expect: every ball comes to rest and falls asleep", stdout, StringComparison.Ordinal);
+        List<string[]> rows = TableRows(stdout, "game");
+        Assert.Equal(13, rows.Count); // t = 0 and a row every 0.5 s for 6 s
+        Assert.Equal("0", rows[0][^1]); // the asleep column: nobody at the start ...
+        Assert.Equal("12", rows[^1][^1]); // ... every ball at the end
+        string[] events = Lines(stdout).Where(l => l.StartsWith("#          ", StringComparison.Ordinal)).Select(l => l.Trim('#', ' ')).ToArray();
+        Assert.Equal(12, events.Count(e => e.Contains(" begin, ", StringComparison.Ordinal))); // one summary under each row after t = 0
+        Assert.Contains(events, e => e.Contains("hits, fastest", StringComparison.Ordinal) && e.Contains("on the ground", StringComparison.Ordinal));
+        Assert.Contains(events, e => e.Contains("enters the drain at t = ", StringComparison.Ordinal));
+        Assert.EndsWith("0 begin, 0 end, 0 hits", events[^1], StringComparison.Ordinal); // asleep: no events at all
+
+        var (csvCode, csv, _) = Run("--scene", "game", "--format", "csv");
+        Assert.Equal(0, csvCode);
+        string[][] csvRows = Lines(csv).Skip(1).Select(line => line.Split(',')).ToArray();
+        Assert.Equal("12", csvRows[^1][CsvColumn("asleep")]);
+        Assert.True(csvRows.Sum(row => int.Parse(row[CsvColumn("hits")], CultureInfo.InvariantCulture)) >= 10, "the pour makes hits");
+        Assert.Equal(
+            csvRows.Sum(row => int.Parse(row[CsvColumn("begin_touch")], CultureInfo.InvariantCulture)) - csvRows.Sum(row => int.Parse(row[CsvColumn("end_touch")], CultureInfo.InvariantCulture)),
+            TouchingPairsOfGameScene());
+    }
+
+    /// <summary>The pairs touching at the end of the game scene, stepped here as the sample steps it.</summary>
+    private static int TouchingPairsOfGameScene()
+    {
+        Scene scene = SceneFactory.Build(new Options { Scene = SceneKind.Game })[0];
+        for (int i = 0; i < scene.Steps; i++)
+        {
+            scene.World.Step(scene.Dt);
+        }
+
+        return scene.World.ContactEvents.Touching.Length;
+    }
+
     private static string[] Lines(string text) =>
         text.Split('\n', StringSplitOptions.RemoveEmptyEntries).Select(l => l.TrimEnd('\r')).Where(l => l.Length > 0).ToArray();
 

@@ -1,0 +1,518 @@
+using System;
+using System.Numerics;
+using SimpleDynamics.Bodies;
+using SimpleDynamics.Collision;
+
+namespace SimpleDynamics;
+
+// Sleeping: islands of bodies at rest leave the step until something reaches them.
+public sealed partial class World
+{
+    // The awake bodies, the ones each step works on; body.index is a body's slot here. While nothing sleeps this
+    // holds the same bodies in the same order as _bodies, so a world that never sleeps steps exactly as before.
+    private RigidBody[] _awake = new RigidBody[16];
+    private int _awakeCount;
+    private int _sleepingCount;
+
+    private bool _sleepingEnabled = true;
+    private float _sleepSpeed = 0.05f;
+    private float _timeToSleep = 0.5f;
+
+    private readonly Islands _islands = new();
+    private float[] _islandSleepTime = new float[16];
+    private bool[] _islandHeld = new bool[16];
+    private bool[] _islandMoved = new bool[16];
+    private int[] _sleepingIslandOf = new int[16];
+
+    // The sleeping bodies in a grid, so that awake bodies find the ones they reach; rebuilt when the set changes.
+    private readonly QueryGrid _sleepGrid = new();
+    private RigidBody[] _sleepers = new RigidBody[16];
+    private long _sleepVersion;
+
+    // Wakes asked for while a step runs (from a responder, say), done before the next step's detection.
+    private RigidBody[] _pendingWakes = new RigidBody[4];
+    private int _pendingWakeCount;
+    private bool _pendingWakeAll;
+
+    /// <summary>
+    /// Whether bodies at rest fall asleep (default true). An island — bodies joined by touching contacts — sleeps
+    /// when every body in it has been slower than <see cref="SleepSpeed"/> for <see cref="TimeToSleep"/> and it rests
+    /// on something that does not move: a plane, a static body or a kinematic body at rest. A sleeping body keeps
+    /// its place, has zero velocity and costs nothing per step; an awake body that touches or closes on it, a
+    /// force, torque or impulse, setting its position, orientation, velocity, mass, radius, filter or sensor flag,
+    /// a moving kinematic body, <see cref="RigidBody.Wake"/> and removing a body it rests on wake its whole island.
+    /// Setting false wakes every body.
+    /// </summary>
+    /// <remarks>
+    /// <para><b>Why on by default.</b> Games expect it: Box2D, Bullet, PhysX, Unity and Godot all sleep bodies at rest
+    /// unless told not to, and a pile or a floor of balls left awake costs a full step forever, while a sleeping one
+    /// costs a constant: a settled pit of 2,000 discs stepped in 1.3 µs asleep against 186 ms awake on a loaded
+    /// machine (benchmarks/README.md, "Sleeping"). Every existing test passes with it on: those that time or count an
+    /// awake pile turn it off, because their pile would fall asleep.</para>
+    /// <para><b>Why it keeps the laws.</b> Only an island resting on something that does not move may sleep, so
+    /// bodies in free space never do: a slow cluster drifting through space keeps its momentum and angular momentum
+    /// exactly, as the property tests of the laws demand (Box2D, by contrast, stops a slow drifter). Where an island
+    /// rests on a support, momentum is not conserved anyway (the support pushes), and sleeping only takes away the
+    /// little kinetic energy left, so energy still never rises. A sleeping body's position does not change at all.</para>
+    /// </remarks>
+    /// <exception cref="InvalidOperationException">Set while the world is stepping.</exception>
+    public bool SleepingEnabled
+    {
+        get => _sleepingEnabled;
+        set
+        {
+            ThrowIfStepping(nameof(SleepingEnabled));
+            if (value && !_sleepingEnabled)
+            {
+                foreach (RigidBody body in AllBodies)
+                {
+                    body.sleepTime = 0; // rest is timed from now, not from before sleeping was turned off
+                }
+            }
+
+            _sleepingEnabled = value;
+            if (!value)
+            {
+                WakeAll();
+            }
+        }
+    }
+
+    /// <summary>
+    /// The speed (m/s, ≥ 0, default 0.05 as Box2D's) below which a body counts as at rest: the fastest point of its
+    /// surface, |v| + |ω| r, must stay at or below it. Box2D's default, for bodies about a metre across; scale it
+    /// with the size of your bodies.
+    /// </summary>
+    public float SleepSpeed
+    {
+        get => _sleepSpeed;
+        set
+        {
+            Guard.NonNegative(value, nameof(SleepSpeed));
+            _sleepSpeed = value;
+        }
+    }
+
+    /// <summary>
+    /// How long (s, &gt; 0, default 0.5 as Box2D's <c>b2_timeToSleep</c>) every body of an island must stay at rest
+    /// (see <see cref="SleepSpeed"/>) before the island falls asleep.
+    /// </summary>
+    public float TimeToSleep
+    {
+        get => _timeToSleep;
+        set
+        {
+            Guard.Positive(value, nameof(TimeToSleep));
+            _timeToSleep = value;
+        }
+    }
+
+    /// <summary>How many bodies sleep now.</summary>
+    public int SleepingBodyCount => _sleepingCount;
+
+    /// <summary>The awake bodies, the ones a step works on.</summary>
+    internal ReadOnlySpan<RigidBody> AwakeSpan => _awake.AsSpan(0, _awakeCount);
+
+    /// <summary>
+    /// Stage of <see cref="Step"/>, before detection: every awake body that touches a sleeping one, or closes on it
+    /// fast enough to touch it within the step, wakes that body's island, so detection and the solver see the
+    /// whole island. Costs nothing while no body sleeps.
+    /// </summary>
+    private void WakeWhatAwakeBodiesReach(float dt)
+    {
+        DoPendingWakes();
+        if (_sleepingCount > 0)
+        {
+            QueryGrid sleepers = CurrentSleepGrid();
+            float fall = 0.5f * Gravity.Length() * dt * dt;
+            for (int i = 0; i < _awakeCount; i++)
+            {
+                RigidBody body = _awake[i];
+                bool moves = body.linearVelocity != Vector3.Zero || body.angularVelocity != Vector3.Zero;
+                if (body.isSensor || body.Type == BodyType.Static || (body.Type == BodyType.Kinematic && !moves))
+                {
+                    continue; // sensors, static bodies and kinematic bodies at rest wake nothing
+                }
+
+                float reach = body.radius + _touchTolerance + fall + dt * body.linearVelocity.Length();
+                sleepers.GatherBox(body.position - new Vector3(reach), body.position + new Vector3(reach));
+                foreach (int slot in sleepers.Candidates)
+                {
+                    RigidBody sleeper = sleepers.BodyAt(slot);
+                    if (sleeper.IsAwake || sleeper.World != this || !PairFilter.Allows(body, sleeper))
+                    {
+                        continue;
+                    }
+
+                    float penetration = ContactGeometry.CirclePenetration(body.position, body.radius, sleeper.position, sleeper.radius, out Vector3 normal);
+                    if (MayTouch(penetration, -Vector3.Dot(body.linearVelocity, normal), dt))
+                    {
+                        WakeIslandNow(sleeper);
+                    }
+                }
+            }
+        }
+
+        RegroupSleepingTouches();
+    }
+
+    /// <summary>
+    /// Stage of <see cref="Step"/>, at its end: advances each awake body's sleep timer, and puts to sleep every
+    /// island whose bodies have all been at rest for <see cref="TimeToSleep"/> and that rests on something fixed.
+    /// </summary>
+    /// <remarks>
+    /// Islands are found only when some body's timer has run out, by a union-find over the step's contacts that
+    /// link two dynamic bodies (<see cref="Links"/>). A contact with a plane, a static body or a kinematic body at
+    /// rest marks its island as held; a contact with a moving kinematic body keeps its island awake.
+    /// </remarks>
+    private void UpdateSleep(float dt)
+    {
+        if (!_sleepingEnabled)
+        {
+            return;
+        }
+
+        bool anyReady = false;
+        for (int i = 0; i < _awakeCount; i++)
+        {
+            RigidBody body = _awake[i];
+            if (!body.IsDynamic)
+            {
+                continue; // static and kinematic bodies never sleep
+            }
+
+            float speed = body.linearVelocity.Length() + body.angularVelocity.Length() * body.radius;
+            if (speed > _sleepSpeed || !body.AllowSleep || body.isSensor)
+            {
+                body.sleepTime = 0;
+            }
+            else
+            {
+                body.sleepTime += dt;
+                anyReady |= body.sleepTime >= _timeToSleep;
+            }
+        }
+
+        if (anyReady)
+        {
+            FindIslandsAndSleep(dt);
+        }
+    }
+
+    private void FindIslandsAndSleep(float dt)
+    {
+        int n = _awakeCount;
+        _islands.Reset(n);
+        Buffers.EnsureCapacity(ref _islandSleepTime, n);
+        Buffers.EnsureCapacity(ref _islandHeld, n);
+        Buffers.EnsureCapacity(ref _islandMoved, n);
+        Buffers.EnsureCapacity(ref _sleepingIslandOf, n);
+        Array.Clear(_islandHeld, 0, n);
+        Array.Clear(_islandMoved, 0, n);
+
+        // Join the bodies that touch; note which bodies rest on something fixed and which touch something moving.
+        foreach (ref readonly Contact contact in Collisions.Contacts)
+        {
+            if (!Links(contact, dt))
+            {
+                continue;
+            }
+
+            RigidBody a = contact.BodyA, b = contact.BodyB;
+            if (a.IsDynamic && b.IsDynamic)
+            {
+                _islands.Union(a.index, b.index);
+            }
+            else if (a.IsDynamic)
+            {
+                Touches(a.index, b);
+            }
+            else if (b.IsDynamic)
+            {
+                Touches(b.index, a);
+            }
+        }
+
+        // Gather each island's least sleep time and its flags at its root.
+        for (int i = 0; i < n; i++)
+        {
+            _islandSleepTime[i] = float.PositiveInfinity;
+            _sleepingIslandOf[i] = -1;
+        }
+
+        for (int i = 0; i < n; i++)
+        {
+            int root = _islands.Find(i);
+            RigidBody body = _awake[i];
+            float time = body.IsDynamic ? body.sleepTime : float.PositiveInfinity;
+            _islandSleepTime[root] = MathF.Min(_islandSleepTime[root], time);
+            _islandHeld[root] |= _islandHeld[i];
+            _islandMoved[root] |= _islandMoved[i];
+        }
+
+        // Put the ready islands to sleep, one sleeping island per root.
+        int asleepBefore = _sleepingCount;
+        for (int i = 0; i < n; i++)
+        {
+            RigidBody body = _awake[i];
+            int root = _islands.Find(i);
+            if (!body.IsDynamic || !_islandHeld[root] || _islandMoved[root] || !(_islandSleepTime[root] >= _timeToSleep))
+            {
+                continue;
+            }
+
+            ref int id = ref _sleepingIslandOf[root];
+            if (id < 0)
+            {
+                id = _islands.NewSleepingIsland(); // the first body of this island met
+            }
+
+            PutToSleep(body, id);
+        }
+
+        if (_sleepingCount != asleepBefore)
+        {
+            CompactAwake();
+            _sleepVersion++;
+            _touchesRegrouped = false;
+            RegroupSleepingTouches();
+        }
+    }
+
+    /// <summary>Marks the island of awake slot <paramref name="i"/> as held by, or moved by, an infinite-mass body.</summary>
+    private void Touches(int i, RigidBody fixedOrKinematic)
+    {
+        bool moves = fixedOrKinematic.Type == BodyType.Kinematic
+            && (fixedOrKinematic.linearVelocity != Vector3.Zero || fixedOrKinematic.angularVelocity != Vector3.Zero);
+        if (moves)
+        {
+            _islandMoved[i] = true;
+        }
+        else
+        {
+            _islandHeld[i] = true; // the ground, a static body or a kinematic body at rest
+        }
+    }
+
+    private void PutToSleep(RigidBody body, int id)
+    {
+        _islands.Add(id, body);
+        body.linearVelocity = Vector3.Zero;
+        body.angularVelocity = Vector3.Zero;
+        body.ClearAccumulators();
+        _sleepingCount++;
+    }
+
+    /// <summary>
+    /// Whether a contact joins its bodies into one island: they touch (the contact pushed during the step, or its gap
+    /// is within <see cref="TouchTolerance"/>), or they may touch within the next step. The same test decides when an
+    /// awake body wakes a sleeping one, so an island never sleeps beside a body that would wake it at once.
+    /// </summary>
+    private bool Links(in Contact contact, float dt)
+    {
+        if (contact.NormalImpulse > 0)
+        {
+            return true;
+        }
+
+        float closing = -Vector3.Dot(contact.BodyA.linearVelocity - contact.BodyB.linearVelocity, contact.Normal);
+        return MayTouch(contact.Penetration, closing, dt);
+    }
+
+    /// <summary>
+    /// Whether two spheres with this penetration (negative: a gap) may touch within a step of dt: the gap is no
+    /// more than the touch tolerance, plus what they close at <paramref name="closingSpeed"/> (m/s, positive when
+    /// approaching), plus the ½ g dt² gravity may add. For spheres only the centres' velocities change the gap.
+    /// </summary>
+    private bool MayTouch(float penetration, float closingSpeed, float dt) =>
+        -penetration <= _touchTolerance + dt * MathF.Max(closingSpeed, 0f) + 0.5f * Gravity.Length() * dt * dt;
+
+    /// <summary>Wakes the island of a sleeping body; during a step, before the next step's detection.</summary>
+    internal void WakeIsland(RigidBody body)
+    {
+        if (_stepping)
+        {
+            Buffers.EnsureCapacity(ref _pendingWakes, _pendingWakeCount + 1);
+            _pendingWakes[_pendingWakeCount++] = body;
+            return;
+        }
+
+        WakeIslandNow(body);
+    }
+
+    /// <summary>Wakes every sleeping body.</summary>
+    private void WakeAll()
+    {
+        if (_sleepingCount == 0)
+        {
+            return;
+        }
+
+        if (_stepping)
+        {
+            _pendingWakeAll = true;
+            return;
+        }
+
+        foreach (RigidBody body in AllBodies)
+        {
+            if (!body.IsAwake)
+            {
+                WakeIslandNow(body);
+            }
+        }
+    }
+
+    private void DoPendingWakes()
+    {
+        if (_pendingWakeAll)
+        {
+            _pendingWakeAll = false;
+            WakeAll();
+        }
+
+        for (int k = 0; k < _pendingWakeCount; k++)
+        {
+            RigidBody body = _pendingWakes[k];
+            _pendingWakes[k] = null!;
+            if (!body.IsAwake && body.World == this)
+            {
+                WakeIslandNow(body);
+            }
+        }
+
+        _pendingWakeCount = 0;
+    }
+
+    /// <summary>Moves every body of a sleeping body's island back among the awake bodies, with its timer reset.</summary>
+    private void WakeIslandNow(RigidBody body)
+    {
+        if (body.island < 0)
+        {
+            return;
+        }
+
+        RigidBody? next;
+        for (RigidBody? member = _islands.Release(body.island); member is not null; member = next)
+        {
+            next = member.nextInIsland;
+            member.nextInIsland = null;
+            member.island = -1;
+            member.sleepTime = 0;
+            AddAwake(member);
+            _sleepingCount--;
+        }
+
+        _sleepVersion++;
+        _touchesRegrouped = false;
+    }
+
+    /// <summary>
+    /// Before a body leaves the world: wakes its own island if it sleeps, and, if it is a static or kinematic body,
+    /// every sleeping island that rests on it.
+    /// </summary>
+    private void WakeWhatRestsOn(RigidBody body)
+    {
+        if (_sleepingCount == 0)
+        {
+            return;
+        }
+
+        body.WakeIfAsleep();
+        if (!body.IsDynamic)
+        {
+            foreach (ContactEvent pair in _contactEvents.Touch.Items)
+            {
+                if (pair.BodyA == body)
+                {
+                    pair.BodyB?.WakeIfAsleep();
+                }
+                else if (pair.BodyB == body)
+                {
+                    pair.BodyA.WakeIfAsleep();
+                }
+            }
+        }
+    }
+
+    /// <summary>
+    /// Grows the per-body arrays of sleeping with the world, when a body is added, so that the step in which a large
+    /// island first falls asleep allocates as little as possible.
+    /// </summary>
+    private void ReserveSleepBuffers(int bodies)
+    {
+        _islands.Reserve(bodies);
+        Buffers.EnsureCapacity(ref _islandSleepTime, bodies);
+        Buffers.EnsureCapacity(ref _islandHeld, bodies);
+        Buffers.EnsureCapacity(ref _islandMoved, bodies);
+        Buffers.EnsureCapacity(ref _sleepingIslandOf, bodies);
+        Buffers.EnsureCapacity(ref _sleepers, bodies);
+    }
+
+    private void AddAwake(RigidBody body)
+    {
+        Buffers.EnsureCapacity(ref _awake, _awakeCount + 1);
+        body.index = _awakeCount;
+        _awake[_awakeCount++] = body;
+    }
+
+    /// <summary>Takes an awake body out of the step's list; the last awake body moves into its slot, as in <see cref="Remove"/>.</summary>
+    private void RemoveAwake(RigidBody body)
+    {
+        int slot = body.index;
+        if (slot < 0)
+        {
+            return;
+        }
+
+        RigidBody last = _awake[--_awakeCount];
+        _awake[slot] = last;
+        last.index = slot;
+        _awake[_awakeCount] = null!;
+        body.index = -1;
+    }
+
+    /// <summary>Drops the bodies that fell asleep from the awake list, keeping the order of the rest.</summary>
+    private void CompactAwake()
+    {
+        int kept = 0;
+        for (int i = 0; i < _awakeCount; i++)
+        {
+            RigidBody body = _awake[i];
+            if (body.IsAwake)
+            {
+                body.index = kept;
+                _awake[kept++] = body;
+            }
+            else
+            {
+                body.index = -1;
+            }
+        }
+
+        Array.Clear(_awake, kept, _awakeCount - kept);
+        _awakeCount = kept;
+    }
+
+    /// <summary>The grid of the sleeping bodies, rebuilt when bodies fell asleep or woke since it was built.</summary>
+    private QueryGrid CurrentSleepGrid()
+    {
+        if (_sleepGrid.Version != _sleepVersion)
+        {
+            Buffers.EnsureCapacity(ref _sleepers, _sleepingCount);
+            int count = 0;
+            foreach (RigidBody body in AllBodies)
+            {
+                if (!body.IsAwake)
+                {
+                    _sleepers[count++] = body;
+                }
+            }
+
+            _sleepGrid.Build(_sleepers.AsSpan(0, count), _sleepVersion);
+            Array.Clear(_sleepers, 0, count);
+        }
+
+        return _sleepGrid;
+    }
+}
