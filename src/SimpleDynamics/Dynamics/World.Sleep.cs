@@ -37,7 +37,8 @@ public sealed partial class World
     /// <summary>
     /// Whether bodies at rest fall asleep (default true). An island — bodies joined by touching contacts — sleeps
     /// when every body in it has been slower than <see cref="SleepSpeed"/> for <see cref="TimeToSleep"/> and it rests
-    /// on something that does not move: a plane, a static body or a kinematic body at rest. A sleeping body keeps
+    /// on something that does not move (a plane, a static body or a kinematic body at rest, pushing on it against
+    /// gravity; without gravity nothing sleeps). A sleeping body keeps
     /// its place, has zero velocity and costs nothing per step; an awake body that touches or closes on it, a
     /// force, torque or impulse, setting its position, orientation, velocity, mass, radius, filter or sensor flag,
     /// a moving kinematic body, <see cref="RigidBody.Wake"/> and removing a body it rests on wake its whole island.
@@ -225,11 +226,11 @@ public sealed partial class World
             }
             else if (a.IsDynamic)
             {
-                Touches(a.index, b);
+                Touches(a.index, b, contact.NormalImpulse > 0);
             }
             else if (b.IsDynamic)
             {
-                Touches(b.index, a);
+                Touches(b.index, a, contact.NormalImpulse > 0);
             }
         }
 
@@ -280,7 +281,12 @@ public sealed partial class World
     }
 
     /// <summary>Marks the island of awake slot <paramref name="i"/> as held by, or moved by, an infinite-mass body.</summary>
-    private void Touches(int i, RigidBody fixedOrKinematic)
+    /// <summary>
+    /// Notes that body i's island touches a static or kinematic body (or the ground of a plane): a moving kinematic
+    /// body keeps the island awake; a fixed one holds it if it pushed on it in this step and gravity presses the island
+    /// onto it. Without gravity nothing rests on anything: a slow ball that touches a wall keeps its motion.
+    /// </summary>
+    private void Touches(int i, RigidBody fixedOrKinematic, bool pushed)
     {
         bool moves = fixedOrKinematic.Type == BodyType.Kinematic
             && (fixedOrKinematic.linearVelocity != Vector3.Zero || fixedOrKinematic.angularVelocity != Vector3.Zero);
@@ -288,9 +294,9 @@ public sealed partial class World
         {
             _islandMoved[i] = true;
         }
-        else
+        else if (pushed && Gravity != Vector3.Zero)
         {
-            _islandHeld[i] = true; // the ground, a static body or a kinematic body at rest
+            _islandHeld[i] = true; // the ground, a static body or a kinematic body at rest, holding the island up
         }
     }
 

@@ -106,6 +106,7 @@ internal sealed class ContactCache
             else if (shrinkTo > 0 && _entries.Length > target)
             {
                 _entries = new Entry[target];
+                Buffers.ShrinkTo(ref _used, target / 2, 0);
             }
             else if (8 * _usedCount < _entries.Length)
             {
