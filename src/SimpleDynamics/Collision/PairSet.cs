@@ -176,18 +176,7 @@ internal sealed class PairSet<T>
         (_items, _spareItems) = (_spareItems, _items);
         Array.Clear(_spareItems, 0, Count);
         Array.Clear(_slots, 0, _slots.Length);
-        int mask = _slots.Length - 1;
-        for (int i = 0; i < Count; i++)
-        {
-            int h = Home(_keys[i], mask);
-            while (_slots[h] != 0)
-            {
-                h = (h + 1) & mask;
-            }
-
-            _slots[h] = i + 1;
-        }
-
+        Rehash();
         HeldCount = heldCount;
     }
 
