@@ -47,8 +47,8 @@ public sealed partial class World
     /// <remarks>
     /// <para><b>Why on by default.</b> Games expect it: Box2D, Bullet, PhysX, Unity and Godot all sleep bodies at rest
     /// unless told not to, and a pile or a floor of balls left awake costs a full step forever, while a sleeping one
-    /// costs a constant: a settled pit of 2,000 discs stepped in 1.3 µs asleep against 186 ms awake on a loaded
-    /// machine (benchmarks/README.md, "Sleeping"). Every existing test passes with it on: those that time or count an
+    /// costs a constant: a settled pit of 1,000 discs stepped in 0.6 µs asleep against 6.4 ms awake (quick mode,
+    /// benchmarks/README.md, "Sleeping"). Every existing test passes with it on: those that time or count an
     /// awake pile turn it off, because their pile would fall asleep.</para>
     /// <para><b>Why it keeps the laws.</b> Only an island resting on something that does not move may sleep, so
     /// bodies in free space never do: a slow cluster drifting through space keeps its momentum and angular momentum
