@@ -66,6 +66,19 @@ public sealed class CollisionData
     /// </summary>
     internal World? Owner { get; init; }
 
+    /// <summary>
+    /// The storage itself, the first <see cref="Count"/> entries being the contacts, for the step's inner loops (one
+    /// read instead of a checked indexer per contact). It is replaced when <see cref="Add"/> grows it.
+    /// </summary>
+    internal Contact[] Storage
+    {
+        get
+        {
+            DropContactsOfRemovedBodies();
+            return _contacts;
+        }
+    }
+
     /// <summary>The room in the storage, for tests of <see cref="TrimExcess"/>.</summary>
     internal int Capacity => _contacts.Length;
 

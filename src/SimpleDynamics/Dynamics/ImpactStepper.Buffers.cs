@@ -9,22 +9,29 @@ namespace SimpleDynamics;
 // Per-body and per-contact working arrays, and the lists of each body's contacts.
 internal sealed partial class ImpactStepper
 {
-    /// <summary>Lists each body's contacts (a linked list through the contacts' two ends), so an impact can re-predict its neighbours.</summary>
-    private void LinkContacts(CollisionData contacts, int n)
+    /// <summary>
+    /// Lists each body's contacts (a linked list through the contacts' two ends), so an impact can re-predict its
+    /// neighbours; done at the substep's first impact, so a resting pile with none does not pay for it.
+    /// </summary>
+    private void EnsureLinked()
     {
-        EnsureContacts(contacts.Count);
-        for (int i = 0; i < n; i++)
+        if (_linked)
+        {
+            return;
+        }
+
+        for (int i = 0; i < _bodyCount; i++)
         {
             _head[i] = -1;
         }
 
-        for (int k = 0; k < contacts.Count; k++)
+        for (int k = 0; k < _contactCount; k++)
         {
-            ref Contact contact = ref contacts[k];
-            Ends(ref contact, out int a, out int b);
+            Ends(ref _contacts[k], out int a, out int b);
             Link(k, a, b);
         }
 
+        _linked = true;
     }
 
     /// <summary>The indices of a contact's bodies in the world, read once a step from the bodies and then from the contact.</summary>

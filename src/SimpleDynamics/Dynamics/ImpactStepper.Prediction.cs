@@ -45,9 +45,9 @@ internal sealed partial class ImpactStepper
     }
 
     /// <summary>Predicts the next impact of contact <paramref name="k"/> and queues it if it falls within the substep.</summary>
-    private void Predict(CollisionData contacts, int k)
+    private void Predict(int k)
     {
-        ref Contact contact = ref contacts[k];
+        ref Contact contact = ref _contacts[k];
         Ends(ref contact, out int a, out int b);
         if (Separating(contact, a, b))
         {
@@ -88,11 +88,12 @@ internal sealed partial class ImpactStepper
         return Vector3.Dot(d, relative) >= 0;
     }
 
-    private void PredictAround(CollisionData contacts, int body)
+    private void PredictAround(int body)
     {
+        EnsureLinked();
         for (int e = _head[body]; e >= 0; e = _next[e])
         {
-            Predict(contacts, e >> 1);
+            Predict(e >> 1);
         }
     }
 

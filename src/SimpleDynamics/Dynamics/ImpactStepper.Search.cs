@@ -74,12 +74,17 @@ internal sealed partial class ImpactStepper
     private void AddContact(CollisionData contacts, in Contact contact)
     {
         contacts.Add(contact);
-        int k = contacts.Count - 1;
-        EnsureContacts(contacts.Count);
-        Ends(ref contacts[k], out int a, out int b);
-        Link(k, a, b);
+        _contacts = contacts.Storage; // it may have grown
+        int k = _contactCount++;
+        EnsureContacts(_contactCount);
+        if (_linked)
+        {
+            Ends(ref _contacts[k], out int a, out int b);
+            Link(k, a, b);
+        }
+
         _limit[k] = float.NaN;
-        Predict(contacts, k);
+        Predict(k);
     }
 
     private void EnsurePairs(CollisionData contacts)

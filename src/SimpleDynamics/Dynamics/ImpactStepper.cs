@@ -86,6 +86,10 @@ internal sealed partial class ImpactStepper
     // Per contact: two list nodes each (one per end), and the depth limit.
     private int[] _next = new int[2 * InitialContacts];
     private float[] _limit = new float[InitialContacts];
+    private Contact[] _contacts = Array.Empty<Contact>(); // the step's contacts (CollisionData.Storage), _contactCount of them
+    private int _contactCount;
+    private int _bodyCount;
+    private bool _linked; // whether _head/_next list each body's contacts yet: only needed once an impact happens
     private readonly EventQueue _queue = new();
     private readonly PairKeySet _pairs = new();
     private bool _pairsReady;
@@ -174,12 +178,16 @@ internal sealed partial class ImpactStepper
             _startChord[i] = _chord[i];
         }
 
-        LinkContacts(contacts, n);
+        _contacts = contacts.Storage;
+        _contactCount = contacts.Count;
+        _bodyCount = n;
+        _linked = false;
+        EnsureContacts(_contactCount);
         _queue.Clear();
-        for (int k = 0; k < contacts.Count; k++)
+        for (int k = 0; k < _contactCount; k++)
         {
             _limit[k] = float.NaN;
-            Predict(contacts, k);
+            Predict(k);
         }
 
         for (int i = 0; i < n; i++)
@@ -190,11 +198,11 @@ internal sealed partial class ImpactStepper
             }
         }
 
-        int impacts = 0, limit = 8 * (contacts.Count + n) + 256;
+        int impacts = 0, limit = 8 * (_contactCount + n) + 256;
         while (_queue.Count > 0)
         {
             EventQueue.Entry next = _queue.Pop();
-            ref Contact contact = ref contacts[next.Contact];
+            ref Contact contact = ref _contacts[next.Contact];
             Ends(ref contact, out int a, out int b);
             if (_version[a] != next.VersionA || (b >= 0 && _version[b] != next.VersionB))
             {
@@ -226,10 +234,10 @@ internal sealed partial class ImpactStepper
                 Search(step, b, stepTimeLeft);
             }
 
-            PredictAround(contacts, a);
+            PredictAround(a);
             if (b >= 0)
             {
-                PredictAround(contacts, b);
+                PredictAround(b);
             }
         }
 
@@ -245,8 +253,10 @@ internal sealed partial class ImpactStepper
 
         if (_jammed)
         {
-            SettleJams(contacts, step.Planes);
+            SettleJams(step.Planes);
         }
+
+        _contacts = Array.Empty<Contact>(); // not kept between substeps: the world's storage may shrink or grow
     }
 
     /// <summary>
@@ -257,14 +267,14 @@ internal sealed partial class ImpactStepper
     /// centres stopped by an inelastic push: the jammed cluster ends the substep moving as one, with linear and
     /// angular momentum kept and kinetic energy lost, as the inelastic collapse it is.
     /// </summary>
-    private void SettleJams(CollisionData contacts, ReadOnlySpan<StaticPlane> planes)
+    private void SettleJams(ReadOnlySpan<StaticPlane> planes)
     {
         for (int sweep = 0; sweep < JamSweeps; sweep++)
         {
             bool pushed = false;
-            for (int k = 0; k < contacts.Count; k++)
+            for (int k = 0; k < _contactCount; k++)
             {
-                ref Contact contact = ref contacts[k];
+                ref Contact contact = ref _contacts[k];
                 Ends(ref contact, out int a, out int b);
                 if (_impacts[a] < ImpactsPerBody && (b < 0 || _impacts[b] < ImpactsPerBody))
                 {
