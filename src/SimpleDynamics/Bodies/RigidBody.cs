@@ -45,6 +45,8 @@ public sealed partial class RigidBody
     internal Matrix3 inertia;
     internal Matrix3 inverseInertia;
     internal Matrix3 inverseInertiaWorld;
+    internal bool isotropic; // I⁻¹ = k·1 (a solid sphere): every rotation leaves it unchanged
+    internal bool symmetricAboutZ; // I⁻¹ = diag(a, a, b) (a disc): a rotation about z leaves it unchanged
     internal float? restitution;
     internal float? friction;
 
@@ -393,10 +395,15 @@ public sealed partial class RigidBody
 
     internal void UpdateInverseInertiaWorld()
     {
-        if (IsDynamic)
+        if (!IsDynamic)
         {
-            inverseInertiaWorld = inverseInertia.RotatedBy(orientation);
+            return;
         }
+
+        // R I⁻¹ Rᵀ (eq. 15) is I⁻¹ itself when the rotation cannot change it: exactly so, without the rounding of
+        // two matrix products, and the case of every sphere and of every disc turning in the plane.
+        bool unchanged = isotropic || (symmetricAboutZ && orientation.X == 0 && orientation.Y == 0);
+        inverseInertiaWorld = unchanged ? inverseInertia : inverseInertia.RotatedBy(orientation);
     }
 
     internal void ClearAccumulators()
@@ -424,6 +431,8 @@ public sealed partial class RigidBody
         this.inverseMass = inverseMass;
         this.inertia = inertia;
         this.inverseInertia = inverseInertia;
+        symmetricAboutZ = inverseInertia.IsSymmetricAboutZ();
+        isotropic = symmetricAboutZ && inverseInertia.M11 == inverseInertia.M33;
         UpdateInverseInertiaWorld();
     }
 

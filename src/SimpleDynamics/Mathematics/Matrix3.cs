@@ -140,6 +140,10 @@ public readonly struct Matrix3 : IEquatable<Matrix3>
         return r * this * r.Transpose();
     }
 
+    /// <summary>True when the matrix is diag(a, a, b): a rotation about z leaves it unchanged (a disc's tensor).</summary>
+    internal bool IsSymmetricAboutZ() =>
+        M11 == M22 && M12 == 0 && M13 == 0 && M21 == 0 && M23 == 0 && M31 == 0 && M32 == 0;
+
     /// <summary>True when every entry is a finite number.</summary>
     public bool IsFinite() =>
         float.IsFinite(M11) && float.IsFinite(M12) && float.IsFinite(M13) &&
