@@ -8,15 +8,13 @@ namespace SimpleDynamics.Response;
 /// is measured again at the start of every substep from the bodies' positions, so that the equal and opposite
 /// impulses act along the current line of contact and keep angular momentum.
 /// </summary>
+/// <remarks>
+/// The fields a velocity sweep reads come first, those of a planar sweep first of all, so that a sweep touches as few
+/// cache lines per contact as it can (the sweeps are most of a step's time).
+/// </remarks>
 internal struct ContactConstraint
 {
     public int A, B;
-
-    // Geometry, measured each substep.
-    public Vector3 Normal, Tangent1, Tangent2;
-    public Vector3 RA, RB;
-    public Vector3 SpinA1, SpinB1, SpinA2, SpinB2; // I⁻¹ (r × t) for each tangent (eq. 15); for spheres r × n = 0
-    public float NormalMass, TangentMass1, TangentMass2; // 1 / the denominator of eq. 16 along n, t1, t2
 
     /// <summary>Whether the contact is solved in this substep: touching and not colliding.</summary>
     public bool Active;
@@ -24,13 +22,21 @@ internal struct ContactConstraint
     /// <summary>Whether A is the upper body along gravity (B lies below it, or is the ground), for shock propagation.</summary>
     public bool AIsUpper;
 
-    // Material, fixed for the step.
+    // Accumulated impulses of the substep.
+    public float NormalImpulse, FrictionImpulse1, FrictionImpulse2;
+
+    // Geometry, measured each substep, then the material, fixed for the step.
+    public float NormalMass, TangentMass1, TangentMass2; // 1 / the denominator of eq. 16 along n, t1, t2
     public float Friction;
+    public Vector3 Normal, Tangent1;
+    public Vector3 SpinA1, SpinB1; // I⁻¹ (r × t) for each tangent (eq. 15); for spheres r × n = 0
+    public Vector3 PerpA, PerpB; // planar steps only: ẑ × r, so that ω × r = ω_z (ẑ × r)
+    public Vector3 RA, RB;
+    public Vector3 Tangent2, SpinA2, SpinB2; // not used in planar steps
     public float RadiusA, RadiusB;
     public float PlaneOffset; // NaN unless B is the ground of a plane
 
-    // Accumulated impulses: the normal one, and friction as a world vector between substeps (the tangents turn).
-    public float NormalImpulse, FrictionImpulse1, FrictionImpulse2;
+    // Friction as a world vector between substeps (the tangents turn), and the step's totals.
     public Vector3 FrictionImpulse;
     public float StepNormalImpulse, StepFrictionImpulse;
 

@@ -22,6 +22,7 @@ public sealed partial class SequentialImpulseSolver
     private float[] _heights = new float[InitialCapacity];
     private int _prepared;
     private Vector3 _gravity;
+    private bool _planar;
 
     /// <summary>
     /// Gives each body a slot in contiguous arrays; slot 0 is the ground (all zero). The slots follow the bodies'
@@ -43,6 +44,7 @@ public sealed partial class SequentialImpulseSolver
         }
 
         _gravity = gravity;
+        _planar = IsPlanar(bodies, gravity);
         _heightOrder.Sort(_bodyHeights.AsSpan(0, n), _bodyOrder.AsSpan(0, n));
         for (int k = 0; k < n; k++)
         {
@@ -56,6 +58,42 @@ public sealed partial class SequentialImpulseSolver
         {
             _radii[_slotOf[i]] = bodies[i].radius;
         }
+    }
+
+    /// <summary>
+    /// Whether the step stays in the plane z = 0 whatever the contacts do: every body and its velocity, force and
+    /// gravity in the plane, spins and torques along z, inverse inertias that turn a z torque into a z spin only, and
+    /// no plane whose normal leaves the plane. Then every contact normal n lies in the plane, its first tangent too
+    /// (<see cref="Vectors.Tangents"/>), and the second is z, along which the relative velocity is exactly zero: its
+    /// friction impulse would always be zero, and the solver leaves that tangent out (one tangent, as in 2-D engines).
+    /// </summary>
+    private bool IsPlanar(ReadOnlySpan<RigidBody> bodies, Vector3 gravity)
+    {
+        if (gravity.Z != 0 || _step is null)
+        {
+            return false;
+        }
+
+        foreach (StaticPlane plane in _step.Planes)
+        {
+            if (plane.Normal.Z != 0)
+            {
+                return false;
+            }
+        }
+
+        foreach (RigidBody body in bodies)
+        {
+            Matrix3 inertia = body.inverseInertiaWorld;
+            if (body.position.Z != 0 || body.linearVelocity.Z != 0 || body.force.Z != 0 ||
+                body.angularVelocity.X != 0 || body.angularVelocity.Y != 0 || body.torque.X != 0 || body.torque.Y != 0 ||
+                inertia.M13 != 0 || inertia.M23 != 0 || inertia.M31 != 0 || inertia.M32 != 0)
+            {
+                return false;
+            }
+        }
+
+        return true;
     }
 
     /// <summary>Copies velocities, masses, world inverse inertia and positions as they are at the start of a substep.</summary>
@@ -181,17 +219,37 @@ public sealed partial class SequentialImpulseSolver
                 continue;
             }
 
-            Vectors.Tangents(c.Normal, out c.Tangent1, out c.Tangent2);
+            if (_planar)
+            {
+                c.Tangent1 = new Vector3(c.Normal.Y, -c.Normal.X, 0); // n × ẑ, as Vectors.Tangents picks it
+                c.PerpA = new Vector3(-c.RA.Y, c.RA.X, 0);
+                c.PerpB = new Vector3(-c.RB.Y, c.RB.X, 0);
+            }
+            else
+            {
+                Vectors.Tangents(c.Normal, out c.Tangent1, out c.Tangent2);
+            }
+
             c.SpinA1 = a.InverseInertia.Transform(Vector3.Cross(c.RA, c.Tangent1));
             c.SpinB1 = b.InverseInertia.Transform(Vector3.Cross(c.RB, c.Tangent1));
-            c.SpinA2 = a.InverseInertia.Transform(Vector3.Cross(c.RA, c.Tangent2));
-            c.SpinB2 = b.InverseInertia.Transform(Vector3.Cross(c.RB, c.Tangent2));
             float inverseMassSum = a.InverseMass + b.InverseMass;
             c.NormalMass = InverseOrZero(inverseMassSum); // eq. 16 along n: r × n = 0 for spheres, so J_α = 0
             c.TangentMass1 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(inverseMassSum, c.SpinA1, c.RA, c.SpinB1, c.RB, c.Tangent1));
-            c.TangentMass2 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(inverseMassSum, c.SpinA2, c.RA, c.SpinB2, c.RB, c.Tangent2));
             c.FrictionImpulse1 = Vector3.Dot(c.FrictionImpulse, c.Tangent1);
-            c.FrictionImpulse2 = Vector3.Dot(c.FrictionImpulse, c.Tangent2);
+            if (_planar)
+            {
+                // The second tangent is z, along which nothing moves (see IsPlanar): no friction to solve there.
+                c.Tangent2 = c.SpinA2 = c.SpinB2 = Vector3.Zero;
+                c.TangentMass2 = c.FrictionImpulse2 = 0;
+            }
+            else
+            {
+                c.SpinA2 = a.InverseInertia.Transform(Vector3.Cross(c.RA, c.Tangent2));
+                c.SpinB2 = b.InverseInertia.Transform(Vector3.Cross(c.RB, c.Tangent2));
+                c.TangentMass2 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(inverseMassSum, c.SpinA2, c.RA, c.SpinB2, c.RB, c.Tangent2));
+                c.FrictionImpulse2 = Vector3.Dot(c.FrictionImpulse, c.Tangent2);
+            }
+
             ClampFriction(ref c);
         }
     }

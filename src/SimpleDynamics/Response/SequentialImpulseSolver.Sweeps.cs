@@ -64,7 +64,14 @@ public sealed partial class SequentialImpulseSolver
             }
 
             float before = c.NormalImpulse;
-            SolveContact(ref c);
+            if (_planar)
+            {
+                SolveContactPlanar(ref c);
+            }
+            else
+            {
+                SolveContact(ref c);
+            }
             largestChange = MathF.Max(largestChange, MathF.Abs(c.NormalImpulse - before));
             largestImpulse = MathF.Max(largestImpulse, c.NormalImpulse);
         }
@@ -88,7 +95,11 @@ public sealed partial class SequentialImpulseSolver
             Vector3 relative = ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB); // eq. 13–14
             float old1 = c.FrictionImpulse1, old2 = c.FrictionImpulse2;
             c.FrictionImpulse1 -= c.TangentMass1 * Vector3.Dot(relative, c.Tangent1);
-            c.FrictionImpulse2 -= c.TangentMass2 * Vector3.Dot(relative, c.Tangent2);
+            if (!_planar)
+            {
+                c.FrictionImpulse2 -= c.TangentMass2 * Vector3.Dot(relative, c.Tangent2);
+            }
+
             ClampFriction(ref c);
             Apply(ref c, 0f, c.FrictionImpulse1 - old1, c.FrictionImpulse2 - old2);
         }
@@ -99,6 +110,39 @@ public sealed partial class SequentialImpulseSolver
         if (c.NormalImpulse != oldNormal)
         {
             Apply(ref c, c.NormalImpulse - oldNormal, 0f, 0f);
+        }
+    }
+
+    /// <summary>
+    /// <see cref="SolveContact"/> in a planar step (see IsPlanar): one tangent, and spins along z only, so that
+    /// ω × r = ω_z (ẑ × r) with ẑ × r prepared (<see cref="ContactConstraint.PerpA"/>), and the friction disc
+    /// |P_t| ≤ μ P_n is the interval [−μ P_n, μ P_n].
+    /// </summary>
+    private void SolveContactPlanar(ref ContactConstraint c)
+    {
+        ref VelocityState a = ref _bodies[c.A];
+        ref VelocityState b = ref _bodies[c.B];
+        if (c.NormalImpulse > 0 || c.FrictionImpulse1 != 0)
+        {
+            Vector3 relative = a.Linear + a.Angular.Z * c.PerpA - (b.Linear + b.Angular.Z * c.PerpB); // eq. 13–14
+            float old = c.FrictionImpulse1, limit = c.Friction * c.NormalImpulse;
+            c.FrictionImpulse1 = Math.Clamp(old - c.TangentMass1 * Vector3.Dot(relative, c.Tangent1), -limit, limit);
+            float change = c.FrictionImpulse1 - old;
+            Vector3 impulse = change * c.Tangent1;
+            a.Linear += impulse * a.InverseMass;
+            a.Angular += change * c.SpinA1;
+            b.Linear -= impulse * b.InverseMass;
+            b.Angular -= change * c.SpinB1;
+        }
+
+        Vector3 velocity = a.Linear + a.Angular.Z * c.PerpA - (b.Linear + b.Angular.Z * c.PerpB);
+        float oldNormal = c.NormalImpulse;
+        c.NormalImpulse = MathF.Max(oldNormal - c.NormalMass * Vector3.Dot(velocity, c.Normal), 0f);
+        if (c.NormalImpulse != oldNormal)
+        {
+            Vector3 impulse = (c.NormalImpulse - oldNormal) * c.Normal;
+            a.Linear += impulse * a.InverseMass;
+            b.Linear -= impulse * b.InverseMass;
         }
     }
 
