@@ -24,6 +24,9 @@ public sealed partial class SequentialImpulseSolver
     private Vector3 _gravity;
     private bool _planar;
 
+    /// <summary>Whether the last step began was solved on the planar path (see IsPlanar), for tests.</summary>
+    internal bool SolvedPlanar => _planar;
+
     /// <summary>
     /// Gives each body a slot in contiguous arrays; slot 0 is the ground (all zero). The slots follow the bodies'
     /// height along gravity, like the contacts (<see cref="OrderAlongGravity"/>), so that a sweep finds the bodies of

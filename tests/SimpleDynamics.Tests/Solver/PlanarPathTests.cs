@@ -1,0 +1,116 @@
+using System;
+using System.Numerics;
+using SimpleDynamics.Bodies;
+using SimpleDynamics.Collision;
+using SimpleDynamics.Mathematics;
+using SimpleDynamics.Response;
+using Xunit;
+
+namespace SimpleDynamics.Tests.Solver;
+
+/// <summary>
+/// The solver's shortcuts for planar steps (one tangent, spins along z) and for inertia tensors that rotations leave
+/// unchanged: they must give the motion the general path gives.
+/// </summary>
+public class PlanarPathTests
+{
+    private const float Dt = 1f / 60f;
+
+    /// <summary>
+    /// Three discs with friction dropped onto each other and onto a disc sliding on the ground (they roll, spin and
+    /// rub), stepped twice: once in the plane, and once with one more disc 10 m away in z, which
+    /// falls far above them, touching nothing, but makes the step non-planar, so the general 3-D path solves it.
+    /// </summary>
+    [Fact]
+    public void Planar_steps_move_discs_as_the_general_path_does()
+    {
+        (World planar, RigidBody[] a) = RubbingDiscs(offPlaneWitness: false);
+        (World general, RigidBody[] b) = RubbingDiscs(offPlaneWitness: true);
+        var planarSolver = (SequentialImpulseSolver)planar.Responder;
+        var generalSolver = (SequentialImpulseSolver)general.Responder;
+        float largestGap = 0, largestSpinGap = 0, largestSpin = 0;
+        for (int step = 0; step < 90; step++)
+        {
+            planar.Step(Dt);
+            general.Step(Dt);
+            Assert.True(planarSolver.SolvedPlanar);
+            Assert.False(generalSolver.SolvedPlanar);
+            for (int i = 0; i < a.Length; i++)
+            {
+                largestGap = MathF.Max(largestGap, Vector3.Distance(a[i].Position, b[i].Position));
+                largestSpinGap = MathF.Max(largestSpinGap, Vector3.Distance(a[i].AngularVelocity, b[i].AngularVelocity));
+                largestSpin = MathF.Max(largestSpin, a[i].AngularVelocity.Length());
+                Assert.Equal(0f, a[i].Position.Z);
+                Assert.Equal(0f, a[i].AngularVelocity.X);
+                Assert.Equal(0f, a[i].AngularVelocity.Y);
+            }
+        }
+
+        Assert.True(largestSpin > 1f, $"the discs must spin for the test to mean anything (largest spin {largestSpin} rad/s)");
+        // The paths differ only in rounding (a clamp to ±μ P_n against a scale onto the disc): 1e-4 of the radius in 1.5 s.
+        Assert.True(largestGap < 1e-4f * 0.3f, $"planar and general paths drift {largestGap} m apart");
+        Assert.True(largestSpinGap < 1e-4f * largestSpin, $"spins differ by {largestSpinGap} rad/s");
+    }
+
+    private static (World World, RigidBody[] Discs) RubbingDiscs(bool offPlaneWitness)
+    {
+        var world = new World(new Vector3(0, -9.81f, 0), new SequentialImpulseSolver(restitution: 0.2f, friction: 0.6f))
+        {
+            SleepingEnabled = false, // a sleeping witness would leave the step planar
+        };
+        world.AddPlane(StaticPlane.Ground());
+        var discs = new[]
+        {
+            Disc(new Vector3(0, 0.3f, 0), new Vector3(3, 0, 0)),
+            Disc(new Vector3(0.35f, 1.0f, 0), Vector3.Zero),
+            Disc(new Vector3(0.1f, 1.7f, 0), new Vector3(-0.5f, 0, 0)),
+            Disc(new Vector3(-0.2f, 2.4f, 0), new Vector3(0.2f, -1, 0)),
+        };
+        foreach (RigidBody disc in discs)
+        {
+            world.Add(disc);
+        }
+
+        if (offPlaneWitness)
+        {
+            world.Add(Disc(new Vector3(0, 1000f, 10f), Vector3.Zero));
+        }
+
+        return (world, discs);
+    }
+
+    private static RigidBody Disc(Vector3 position, Vector3 velocity) =>
+        new(1f, 0.3f, position, Inertia.Disc(1f, 0.3f)) { LinearVelocity = velocity };
+
+    [Fact]
+    public void A_tumbling_sphere_keeps_its_inverse_inertia_exactly()
+    {
+        var world = new World(Vector3.Zero);
+        RigidBody sphere = world.Add(new RigidBody(2f, 0.5f, Vector3.Zero) { AngularVelocity = new Vector3(1, -2, 3) });
+        Matrix3 body = sphere.Inertia.Inverse();
+        for (int i = 0; i < 200; i++)
+        {
+            world.Step(Dt);
+        }
+
+        Assert.NotEqual(Quaternion.Identity, sphere.Orientation);
+        Assert.Equal(body, sphere.InverseInertiaWorld);
+    }
+
+    [Fact]
+    public void A_disc_keeps_its_inverse_inertia_while_it_turns_about_z_and_rotates_it_when_it_tumbles()
+    {
+        var world = new World(Vector3.Zero);
+        RigidBody turning = world.Add(new RigidBody(1f, 0.5f, Vector3.Zero, Inertia.Disc(1f, 0.5f)) { AngularVelocity = new Vector3(0, 0, 4) });
+        RigidBody tumbling = world.Add(new RigidBody(1f, 0.5f, new Vector3(5, 0, 0), Inertia.Disc(1f, 0.5f)) { AngularVelocity = new Vector3(4, 0, 0) });
+        for (int i = 0; i < 20; i++)
+        {
+            world.Step(Dt);
+        }
+
+        Assert.Equal(turning.Inertia.Inverse(), turning.InverseInertiaWorld);
+        Matrix3 expected = tumbling.Inertia.Inverse().RotatedBy(tumbling.Orientation);
+        Assert.NotEqual(tumbling.Inertia.Inverse(), tumbling.InverseInertiaWorld);
+        Assert.Equal(expected, tumbling.InverseInertiaWorld);
+    }
+}
