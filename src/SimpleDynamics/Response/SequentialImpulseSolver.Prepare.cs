@@ -233,8 +233,17 @@ public sealed partial class SequentialImpulseSolver
                 Vectors.Tangents(c.Normal, out c.Tangent1, out c.Tangent2);
             }
 
-            c.SpinA1 = a.InverseInertia.Transform(Vector3.Cross(c.RA, c.Tangent1));
-            c.SpinB1 = b.InverseInertia.Transform(Vector3.Cross(c.RB, c.Tangent1));
+            if (_planar)
+            {
+                // r × t lies along z, and the inverse inertia maps z to z (see IsPlanar): I⁻¹ (r × t) = I⁻¹_zz (r × t).
+                c.SpinA1 = a.InverseInertia.M33 * Vector3.Cross(c.RA, c.Tangent1);
+                c.SpinB1 = b.InverseInertia.M33 * Vector3.Cross(c.RB, c.Tangent1);
+            }
+            else
+            {
+                c.SpinA1 = a.InverseInertia.Transform(Vector3.Cross(c.RA, c.Tangent1));
+                c.SpinB1 = b.InverseInertia.Transform(Vector3.Cross(c.RB, c.Tangent1));
+            }
             float inverseMassSum = a.InverseMass + b.InverseMass;
             c.NormalMass = InverseOrZero(inverseMassSum); // eq. 16 along n: r × n = 0 for spheres, so J_α = 0
             c.TangentMass1 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(inverseMassSum, c.SpinA1, c.RA, c.SpinB1, c.RB, c.Tangent1));
