@@ -102,15 +102,9 @@ internal sealed partial class ImpactStepper
         Buffers.EnsureCapacity(ref _reach, n);
         Buffers.EnsureCapacity(ref _startVelocity, n);
         Buffers.EnsureCapacity(ref _forcedVelocity, n);
-        Buffers.EnsureCapacity(ref _x, n);
-        Buffers.EnsureCapacity(ref _u, n);
-        Buffers.EnsureCapacity(ref _a, n);
-        Buffers.EnsureCapacity(ref _chord, n);
         Buffers.EnsureCapacity(ref _substepStart, n);
         Buffers.EnsureCapacity(ref _startChord, n);
-        Buffers.EnsureCapacity(ref _t, n);
-        Buffers.EnsureCapacity(ref _version, n);
-        Buffers.EnsureCapacity(ref _impacts, n);
+        Buffers.EnsureCapacity(ref _motion, n);
         Buffers.EnsureCapacity(ref _held, n);
         Buffers.EnsureCapacity(ref _head, n);
     }
@@ -127,15 +121,9 @@ internal sealed partial class ImpactStepper
         Buffers.ShrinkTo(ref _reach, capacity, 0);
         Buffers.ShrinkTo(ref _startVelocity, capacity, 0);
         Buffers.ShrinkTo(ref _forcedVelocity, capacity, 0);
-        Buffers.ShrinkTo(ref _x, capacity, 0);
-        Buffers.ShrinkTo(ref _u, capacity, 0);
-        Buffers.ShrinkTo(ref _a, capacity, 0);
-        Buffers.ShrinkTo(ref _chord, capacity, 0);
         Buffers.ShrinkTo(ref _substepStart, capacity, 0);
         Buffers.ShrinkTo(ref _startChord, capacity, 0);
-        Buffers.ShrinkTo(ref _t, capacity, 0);
-        Buffers.ShrinkTo(ref _version, capacity, 0);
-        Buffers.ShrinkTo(ref _impacts, capacity, 0);
+        Buffers.ShrinkTo(ref _motion, capacity, 0);
         Buffers.ShrinkTo(ref _held, capacity, 0);
         Buffers.ShrinkTo(ref _head, capacity, 0);
     }

@@ -49,74 +49,87 @@ internal sealed partial class ImpactStepper
     {
         ref Contact contact = ref _contacts[k];
         Ends(ref contact, out int a, out int b);
-        if (Separating(contact, a, b))
+        double time;
+        if (b < 0)
         {
-            return; // most contacts of a resting pile: no impact this substep, and no need to measure them
+            if (Vector3.Dot(contact.Normal, _motion[a].Chord) >= 0)
+            {
+                return; // moving away from the plane, or along it
+            }
+
+            time = PlaneImpactTime(contact, a, LimitOf(k));
+        }
+        else
+        {
+            // Along straight chords the squared distance |d + v s|² is convex in s, so a pair whose distance does not
+            // fall now (d · v ≥ 0) does not fall during the rest of the substep: most contacts of a resting pile,
+            // which therefore need no measuring.
+            Vector3 relative = _motion[a].Chord - _motion[b].Chord;
+            if (relative == Vector3.Zero)
+            {
+                return;
+            }
+
+            double t0 = Math.Max(_motion[a].T, _motion[b].T);
+            Vector3 d = _motion[a].X + _motion[a].Chord * (float)(t0 - _motion[a].T) - (_motion[b].X + _motion[b].Chord * (float)(t0 - _motion[b].T));
+            if (Vector3.Dot(d, relative) >= 0)
+            {
+                return;
+            }
+
+            time = PairImpactTime(a, b, t0, d, relative, LimitOf(k));
         }
 
-        if (float.IsNaN(_limit[k]))
-        {
-            _limit[k] = DepthLimit(contact); // from the substep's start, worked out only for pairs that close
-        }
-
-        double time = b < 0 ? PlaneImpactTime(contact, a, _limit[k]) : PairImpactTime(contact, a, b, _limit[k]);
         if (time <= _h)
         {
-            _queue.Push(time, k, _version[a], b >= 0 ? _version[b] : 0);
+            _queue.Push(time, k, _motion[a].Version, b >= 0 ? _motion[b].Version : 0);
         }
+    }
+
+    /// <summary>Contact k's depth limit, worked out from the substep's start the first time the pair closes.</summary>
+    private float LimitOf(int k)
+    {
+        if (float.IsNaN(_limit[k]))
+        {
+            _limit[k] = DepthLimit(_contacts[k]);
+        }
+
+        return _limit[k];
     }
 
     /// <summary>
-    /// Whether the pair's distance cannot fall during the rest of the substep: along straight chords the squared
-    /// distance |d + v s|² is convex in s, so it never falls if it does not fall now (d · v ≥ 0).
+    /// Re-predicts the contacts of <paramref name="body"/> after it collided, except <paramref name="skip"/> (the
+    /// contact of the collision, when the other body's contacts have just predicted it).
     /// </summary>
-    private bool Separating(in Contact contact, int a, int b)
-    {
-        if (b < 0)
-        {
-            return Vector3.Dot(contact.Normal, _chord[a]) >= 0;
-        }
-
-        Vector3 relative = _chord[a] - _chord[b];
-        if (relative == Vector3.Zero)
-        {
-            return true;
-        }
-
-        double t0 = Math.Max(_t[a], _t[b]);
-        Vector3 d = _x[a] + _chord[a] * (float)(t0 - _t[a]) - (_x[b] + _chord[b] * (float)(t0 - _t[b]));
-        return Vector3.Dot(d, relative) >= 0;
-    }
-
-    private void PredictAround(int body)
+    private void PredictAround(int body, int skip = -1)
     {
         EnsureLinked();
         for (int e = _head[body]; e >= 0; e = _next[e])
         {
-            Predict(e >> 1);
+            if (e >> 1 != skip)
+            {
+                Predict(e >> 1);
+            }
         }
     }
 
     /// <summary>
-    /// When the centres' distance, moving along their chords, first reaches r_A + r_B − limit while they approach;
-    /// +∞ if it does not. Solves |d + v s|² = D² for the smaller root s ≥ 0 in double precision.
+    /// When the centres' distance, moving along their chords from <paramref name="d"/> at <paramref name="t0"/>, first
+    /// reaches r_A + r_B − limit while they approach; +∞ if it does not. Solves |d + v s|² = D² for the smaller root
+    /// s ≥ 0 in double precision.
     /// </summary>
-    private double PairImpactTime(in Contact contact, int a, int b, float limit)
+    private double PairImpactTime(int a, int b, double t0, Vector3 d, Vector3 relative, float limit)
     {
-        double t0 = Math.Max(_t[a], _t[b]);
-        Vector3 pa = _x[a] + _chord[a] * (float)(t0 - _t[a]);
-        Vector3 pb = _x[b] + _chord[b] * (float)(t0 - _t[b]);
-        double dx = pa.X - pb.X, dy = pa.Y - pb.Y, dz = pa.Z - pb.Z;
-        Vector3 relative = _chord[a] - _chord[b];
+        double dx = d.X, dy = d.Y, dz = d.Z;
         double vx = relative.X, vy = relative.Y, vz = relative.Z;
         double dv = dx * vx + dy * vy + dz * vz;
         double distance = Math.Sqrt(dx * dx + dy * dy + dz * dz);
-        if (dv >= -ClosingTolerance * distance * (_chord[a].Length() + _chord[b].Length()))
+        if (dv >= -ClosingTolerance * distance * (_motion[a].Chord.Length() + _motion[b].Chord.Length()))
         {
             return double.PositiveInfinity; // not approaching, or only by the rounding of a pair just answered
         }
 
-        double reach = (double)contact.BodyA.radius + contact.BodyB.radius - limit;
+        double reach = (double)_motion[a].Radius + _motion[b].Radius - limit;
         double excess = dx * dx + dy * dy + dz * dz - reach * reach;
         if (excess <= 0)
         {
@@ -136,13 +149,13 @@ internal sealed partial class ImpactStepper
     /// <summary>When a body moving along its chord reaches the plane's depth limit; +∞ if it does not.</summary>
     private double PlaneImpactTime(in Contact contact, int a, float limit)
     {
-        double closing = Vector3.Dot(contact.Normal, _chord[a]);
-        if (closing >= -ClosingTolerance * _chord[a].Length())
+        double closing = Vector3.Dot(contact.Normal, _motion[a].Chord);
+        if (closing >= -ClosingTolerance * _motion[a].Chord.Length())
         {
             return double.PositiveInfinity;
         }
 
-        double gap = (double)Vector3.Dot(contact.Normal, _x[a]) - contact.PlaneOffset - contact.BodyA.radius + limit;
-        return gap <= 0 ? _t[a] : _t[a] + gap / -closing;
+        double gap = (double)Vector3.Dot(contact.Normal, _motion[a].X) - contact.PlaneOffset - contact.BodyA.radius + limit;
+        return gap <= 0 ? _motion[a].T : _motion[a].T + gap / -closing;
     }
 }

@@ -12,7 +12,7 @@ internal sealed partial class ImpactStepper
     /// <summary>Whether body i's path to the end of the substep leaves the sphere detection covered for it this step.</summary>
     private bool LeavesReach(int i)
     {
-        Vector3 end = _x[i] + _chord[i] * (float)(_h - _t[i]);
+        Vector3 end = _motion[i].X + _motion[i].Chord * (float)(_h - _motion[i].T);
         return Vector3.DistanceSquared(end, _stepStart[i]) > _reach[i] * _reach[i];
     }
 
@@ -26,8 +26,8 @@ internal sealed partial class ImpactStepper
         ReadOnlySpan<RigidBody> bodies = step.Bodies;
         CollisionData contacts = step.Contacts;
         RigidBody body = bodies[i];
-        Vector3 end = _x[i] + _chord[i] * (float)(_h - _t[i]);
-        float speed = MathF.Max(_chord[i].Length(), (_u[i] + _a[i] * (float)(_h - _t[i])).Length());
+        Vector3 end = _motion[i].X + _motion[i].Chord * (float)(_h - _motion[i].T);
+        float speed = MathF.Max(_motion[i].Chord.Length(), (_motion[i].U + _motion[i].A * (float)(_h - _motion[i].T)).Length());
         _reach[i] = MathF.Max(2 * _reach[i], Vector3.Distance(end, _stepStart[i]) + speed * stepTimeLeft);
         EnsurePairs(contacts);
         for (int j = 0; j < bodies.Length; j++)
