@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using SimpleDynamics.Bodies;
 using SimpleDynamics.Collision;
 using SimpleDynamics.Response;
@@ -118,6 +119,7 @@ public sealed partial class World
     /// given a sphere of its radius plus half the margin plus the distance it can travel: |v| dt, and ½ |g| dt² that
     /// gravity adds (so a ball at rest with a long step is still caught by the ground).
     /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // inlined into Step, it left the JIT no budget to inline the vector maths
     private void DetectCollisions(float dt)
     {
         Collisions.Clear();
