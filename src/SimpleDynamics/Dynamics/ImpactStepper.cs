@@ -58,18 +58,6 @@ internal sealed partial class ImpactStepper
     public const int ImpactsPerBody = 32;
 
     /// <summary>
-    /// Of those, the impacts that only stop a creep (the pair would sink less than <see cref="HeldDepthTolerance"/> of
-    /// the smaller radius in the substep): the chatter of a cluster pressed together, where each push passes on to a
-    /// neighbour and comes back slower, the inelastic collapse itself. A body jams after this many of them; measured
-    /// on <see cref="Scenes.Smash"/> (1,000 discs), 60 % of the impacts were such creeps, and with this limit the
-    /// cluster is settled as one (see SettleJams) instead of through thousands of them.
-    /// </summary>
-    public const int CreepingImpactsPerBody = 4;
-
-    /// <summary>Sweeps over the contacts of bodies that used up their impacts (see SettleJams).</summary>
-    private const int JamSweeps = 8;
-
-    /// <summary>
     /// A pair closes only if its closing speed exceeds this fraction of its speeds: a pair just answered is left
     /// exactly non-approaching, up to float rounding, which must not count as a new impact.
     /// </summary>
@@ -96,7 +84,6 @@ internal sealed partial class ImpactStepper
     private readonly EventQueue _queue = new();
     private readonly PairKeySet _pairs = new();
     private bool _pairsReady;
-    private bool _jammed;
     private double _h;
     private long _stepNumber;
 
@@ -280,57 +267,6 @@ internal sealed partial class ImpactStepper
     }
 
     /// <summary>
-    /// A body that used up its impacts was held where it stood, but kept its velocity: left so, it would drive into its
-    /// neighbours again in the next substep, gain speed from gravity while it cannot move, and use up its impacts
-    /// again (a pile stepped with one long substep did this, its balls reaching 1 m/s while standing still). So the
-    /// touching contacts of such bodies are swept a few times (Gauss–Seidel), each pair's approach along its line of
-    /// centres stopped by an inelastic push: the jammed cluster ends the substep moving as one, with linear and
-    /// angular momentum kept and kinetic energy lost, as the inelastic collapse it is.
-    /// </summary>
-    private void SettleJams(ReadOnlySpan<StaticPlane> planes)
-    {
-        for (int sweep = 0; sweep < JamSweeps; sweep++)
-        {
-            bool pushed = false;
-            for (int k = 0; k < _contactCount; k++)
-            {
-                ref Contact contact = ref _contacts[k];
-                Ends(ref contact, out int a, out int b);
-                if (_motion[a].Impacts < ImpactsPerBody && (b < 0 || _motion[b].Impacts < ImpactsPerBody))
-                {
-                    continue;
-                }
-
-                Measure(ref contact, planes);
-                float smaller = b < 0 ? contact.BodyA.radius : MathF.Min(contact.BodyA.radius, contact.BodyB.radius);
-                if (contact.Penetration < -HeldDepthTolerance * smaller)
-                {
-                    continue; // apart: not part of the jam
-                }
-
-                if (StopApproach(ref contact, a, b))
-                {
-                    // A body pushed by the jam joins it: its own contacts are swept too, down to the ground.
-                    _motion[a].Impacts = ImpactsPerBody;
-                    if (b >= 0)
-                    {
-                        _motion[b].Impacts = ImpactsPerBody;
-                    }
-
-                    pushed = true;
-                }
-            }
-
-            if (!pushed)
-            {
-                break;
-            }
-        }
-
-        _jammed = false;
-    }
-
-    /// <summary>
     /// One impact at time <paramref name="time"/>: both bodies travel to it, the contact is measured there, the
     /// responder answers it, and a pair that still approaches is stopped along the normal.
     /// </summary>
@@ -389,22 +325,6 @@ internal sealed partial class ImpactStepper
         {
             _motion[b].Chord = _motion[b].U + 0.5f * (float)(_h - _motion[b].T) * _motion[b].A;
         }
-    }
-
-    /// <summary>Whether an impact only stops a creep: its approach would sink the pair by less than <see cref="HeldDepthTolerance"/> of the smaller radius in a substep.</summary>
-    private bool Creeping(in Contact contact, int a, int b)
-    {
-        float smaller = b < 0 ? _motion[a].Radius : MathF.Min(_motion[a].Radius, _motion[b].Radius);
-        return -contact.ApproachVelocity * (float)_h < HeldDepthTolerance * smaller;
-    }
-
-    /// <summary>A body that has used up its impacts stays where it is for the rest of the substep.</summary>
-    private void HoldStill(int i)
-    {
-        _jammed = true;
-        _motion[i].Chord = Vector3.Zero;
-        _motion[i].A = Vector3.Zero;
-        _motion[i].Impacts = ImpactsPerBody;
     }
 
     /// <summary>
