@@ -28,11 +28,10 @@ internal struct ContactConstraint
     // Geometry, measured each substep, then the material, fixed for the step.
     public float NormalMass, TangentMass1, TangentMass2; // 1 / the denominator of eq. 16 along n, t1, t2
     public float Friction;
+    public float RhoA, RhoB; // lever arms along the normal: r_A = −ρ_A n, r_B = ρ_B n (the point is on the line of centres)
     public Vector3 Normal, Tangent1;
     public Vector3 SpinA1, SpinB1; // I⁻¹ (r × t) for each tangent (eq. 15); for spheres r × n = 0
-    public Vector3 PerpA, PerpB; // planar steps only: ẑ × r, so that ω × r = ω_z (ẑ × r)
-    public Vector3 RA, RB;
-    public Vector3 Tangent2, SpinA2, SpinB2; // not used in planar steps
+    public Vector3 Tangent2, SpinA2, SpinB2; // t₂ = n × t₁; zero in planar steps
     public float RadiusA, RadiusB;
     public float PlaneOffset; // NaN unless B is the ground of a plane
 

@@ -200,17 +200,19 @@ public sealed partial class SequentialImpulseSolver
             float penetration;
             if (c.IsPlaneContact)
             {
-                penetration = ContactGeometry.Unchecked.PlanePenetration(positionA, c.RadiusA, c.Normal = PlaneNormal(k), c.PlaneOffset);
+                penetration = ContactGeometry.Unchecked.PlanePenetration(positionA, c.RadiusA, c.Normal = contacts[k].Normal, c.PlaneOffset);
             }
             else
             {
                 penetration = ContactGeometry.Unchecked.CirclePenetration(positionA, c.RadiusA, _positions[c.B], c.RadiusB, out c.Normal);
             }
 
-            Vector3 point = positionA - c.Normal * (c.RadiusA - 0.5f * penetration);
-            c.RA = point - positionA;
-            c.RB = point - _positions[c.B];
-            float normalVelocity = Vector3.Dot(ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB), c.Normal);
+            // Lever arms: the contact point lies on the line of centres, r_A = −ρ_A n and r_B = ρ_B n (eq. 16), with
+            // ρ = r − d/2 for depth d (the point midway through the overlap). So r × n = 0: the normal impulse turns
+            // nothing, and ω × r adds nothing along n.
+            c.RhoA = c.RadiusA - 0.5f * penetration;
+            c.RhoB = c.RadiusB - 0.5f * penetration;
+            float normalVelocity = Vector3.Dot(a.Linear - b.Linear, c.Normal); // eq. 13–14 along n
             bool pushed = c.NormalImpulse > 0 || contacts[k].NormalImpulse > 0; // in the last substep, or by an impact of this step
             c.Active = (penetration >= 0 || (penetration >= -_slop && pushed)) && normalVelocity >= -_restitutionThreshold;
             c.AIsUpper = c.B == 0 || Vector3.Dot(positionA - _positions[c.B], _gravity) <= 0;
@@ -222,51 +224,38 @@ public sealed partial class SequentialImpulseSolver
                 continue;
             }
 
-            if (_planar)
-            {
-                c.Tangent1 = new Vector3(c.Normal.Y, -c.Normal.X, 0); // n × ẑ, as Vectors.Tangents picks it
-                c.PerpA = new Vector3(-c.RA.Y, c.RA.X, 0);
-                c.PerpB = new Vector3(-c.RB.Y, c.RB.X, 0);
-            }
-            else
-            {
-                Vectors.Tangents(c.Normal, out c.Tangent1, out c.Tangent2);
-            }
-
-            if (_planar)
-            {
-                // r × t lies along z, and the inverse inertia maps z to z (see IsPlanar): I⁻¹ (r × t) = I⁻¹_zz (r × t).
-                c.SpinA1 = a.InverseInertia.M33 * Vector3.Cross(c.RA, c.Tangent1);
-                c.SpinB1 = b.InverseInertia.M33 * Vector3.Cross(c.RB, c.Tangent1);
-            }
-            else
-            {
-                c.SpinA1 = a.InverseInertia.Transform(Vector3.Cross(c.RA, c.Tangent1));
-                c.SpinB1 = b.InverseInertia.Transform(Vector3.Cross(c.RB, c.Tangent1));
-            }
+            // Tangents with t₂ = n × t₁, so that r_A × t₁ = −ρ_A t₂, r_A × t₂ = ρ_A t₁ (and for B with +ρ_B): the spins
+            // I⁻¹ (r × t) a unit friction impulse causes (eq. 15) and the denominators of eq. 16 along t need no cross
+            // product. In a planar step t₁ = n × ẑ lies in the plane and t₂ = −ẑ, along which nothing moves (IsPlanar):
+            // its friction is exactly zero and is left out, and I⁻¹ ẑ = I⁻¹_zz ẑ.
             float inverseMassSum = a.InverseMass + b.InverseMass;
             c.NormalMass = InverseOrZero(inverseMassSum); // eq. 16 along n: r × n = 0 for spheres, so J_α = 0
-            c.TangentMass1 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(inverseMassSum, c.SpinA1, c.RA, c.SpinB1, c.RB, c.Tangent1));
-            c.FrictionImpulse1 = Vector3.Dot(c.FrictionImpulse, c.Tangent1);
             if (_planar)
             {
-                // The second tangent is z, along which nothing moves (see IsPlanar): no friction to solve there.
-                c.Tangent2 = c.SpinA2 = c.SpinB2 = Vector3.Zero;
+                c.Tangent1 = new Vector3(c.Normal.Y, -c.Normal.X, 0);
+                c.Tangent2 = Vector3.Zero;
+                c.SpinA1 = new Vector3(0, 0, c.RhoA * a.InverseInertia.M33);
+                c.SpinB1 = new Vector3(0, 0, -c.RhoB * b.InverseInertia.M33);
+                c.SpinA2 = c.SpinB2 = Vector3.Zero;
+                c.TangentMass1 = InverseOrZero(inverseMassSum + c.RhoA * c.SpinA1.Z - c.RhoB * c.SpinB1.Z);
                 c.TangentMass2 = c.FrictionImpulse2 = 0;
             }
             else
             {
-                c.SpinA2 = a.InverseInertia.Transform(Vector3.Cross(c.RA, c.Tangent2));
-                c.SpinB2 = b.InverseInertia.Transform(Vector3.Cross(c.RB, c.Tangent2));
-                c.TangentMass2 = InverseOrZero(ImpulseMath.EffectiveMassDenominator(inverseMassSum, c.SpinA2, c.RA, c.SpinB2, c.RB, c.Tangent2));
+                Vectors.Tangents(c.Normal, out c.Tangent1, out c.Tangent2);
+                c.SpinA1 = -c.RhoA * a.InverseInertia.Transform(c.Tangent2);
+                c.SpinB1 = c.RhoB * b.InverseInertia.Transform(c.Tangent2);
+                c.SpinA2 = c.RhoA * a.InverseInertia.Transform(c.Tangent1);
+                c.SpinB2 = -c.RhoB * b.InverseInertia.Transform(c.Tangent1);
+                c.TangentMass1 = InverseOrZero(inverseMassSum + Vector3.Dot(c.RhoB * c.SpinB1 - c.RhoA * c.SpinA1, c.Tangent2));
+                c.TangentMass2 = InverseOrZero(inverseMassSum + Vector3.Dot(c.RhoA * c.SpinA2 - c.RhoB * c.SpinB2, c.Tangent1));
                 c.FrictionImpulse2 = Vector3.Dot(c.FrictionImpulse, c.Tangent2);
             }
 
+            c.FrictionImpulse1 = Vector3.Dot(c.FrictionImpulse, c.Tangent1);
             ClampFriction(ref c);
         }
     }
-
-    private Vector3 PlaneNormal(int k) => _step!.Contacts[k].Normal;
 
     private int SlotOf(RigidBody body) => body.index < 0 ? 0 : _slotOf[body.index]; // the ground (index −1) is slot 0
 

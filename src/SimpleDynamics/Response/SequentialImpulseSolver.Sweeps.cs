@@ -64,14 +64,7 @@ public sealed partial class SequentialImpulseSolver
             }
 
             float before = c.NormalImpulse;
-            if (_planar)
-            {
-                SolveContactPlanar(ref c);
-            }
-            else
-            {
-                SolveContact(ref c);
-            }
+            SolveContact(ref c);
             largestChange = MathF.Max(largestChange, MathF.Abs(c.NormalImpulse - before));
             largestImpulse = MathF.Max(largestImpulse, c.NormalImpulse);
         }
@@ -84,6 +77,11 @@ public sealed partial class SequentialImpulseSolver
     /// disc |P_t| ≤ μ P_n), then the normal impulse of eq. 16 that stops the approach, accumulated and clamped to ≥ 0
     /// (a contact pushes, never pulls).
     /// </summary>
+    /// <remarks>
+    /// The relative velocity at the contact, v_A + ω_A × r_A − v_B − ω_B × r_B (eq. 13–14), with r_A = −ρ_A n and
+    /// r_B = ρ_B n (see MeasureConstraints) is Δv − W × n for Δv = v_A − v_B and W = ρ_A ω_A + ρ_B ω_B; along the
+    /// tangents (t₂ = n × t₁) that is Δv·t₁ − W·t₂ and Δv·t₂ + W·t₁, and along n just Δv·n.
+    /// </remarks>
     private void SolveContact(ref ContactConstraint c)
     {
         ref VelocityState a = ref _bodies[c.A];
@@ -92,55 +90,32 @@ public sealed partial class SequentialImpulseSolver
         // A contact that pushes nothing has no friction either (|P_t| ≤ μ P_n = 0): skip the work.
         if (c.NormalImpulse > 0 || c.FrictionImpulse1 != 0 || c.FrictionImpulse2 != 0)
         {
-            Vector3 relative = ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB); // eq. 13–14
+            Vector3 linear = a.Linear - b.Linear;
+            Vector3 spin = c.RhoA * a.Angular + c.RhoB * b.Angular;
             float old1 = c.FrictionImpulse1, old2 = c.FrictionImpulse2;
-            c.FrictionImpulse1 -= c.TangentMass1 * Vector3.Dot(relative, c.Tangent1);
-            if (!_planar)
+            if (_planar)
             {
-                c.FrictionImpulse2 -= c.TangentMass2 * Vector3.Dot(relative, c.Tangent2);
+                // One tangent (t₂ = −ẑ), so the disc |P_t| ≤ μ P_n is the interval [−μ P_n, μ P_n].
+                float limit = c.Friction * c.NormalImpulse;
+                float sliding = Vector3.Dot(linear, c.Tangent1) + spin.Z;
+                c.FrictionImpulse1 = Math.Clamp(old1 - c.TangentMass1 * sliding, -limit, limit);
+            }
+            else
+            {
+                c.FrictionImpulse1 -= c.TangentMass1 * (Vector3.Dot(linear, c.Tangent1) - Vector3.Dot(spin, c.Tangent2));
+                c.FrictionImpulse2 -= c.TangentMass2 * (Vector3.Dot(linear, c.Tangent2) + Vector3.Dot(spin, c.Tangent1));
+                ClampFriction(ref c);
             }
 
-            ClampFriction(ref c);
             Apply(ref c, 0f, c.FrictionImpulse1 - old1, c.FrictionImpulse2 - old2);
         }
 
-        float normalVelocity = Vector3.Dot(ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB), c.Normal);
+        float normalVelocity = Vector3.Dot(a.Linear - b.Linear, c.Normal);
         float oldNormal = c.NormalImpulse;
         c.NormalImpulse = MathF.Max(oldNormal - c.NormalMass * normalVelocity, 0f);
         if (c.NormalImpulse != oldNormal)
         {
-            Apply(ref c, c.NormalImpulse - oldNormal, 0f, 0f);
-        }
-    }
-
-    /// <summary>
-    /// <see cref="SolveContact"/> in a planar step (see IsPlanar): one tangent, and spins along z only, so that
-    /// ω × r = ω_z (ẑ × r) with ẑ × r prepared (<see cref="ContactConstraint.PerpA"/>), and the friction disc
-    /// |P_t| ≤ μ P_n is the interval [−μ P_n, μ P_n].
-    /// </summary>
-    private void SolveContactPlanar(ref ContactConstraint c)
-    {
-        ref VelocityState a = ref _bodies[c.A];
-        ref VelocityState b = ref _bodies[c.B];
-        if (c.NormalImpulse > 0 || c.FrictionImpulse1 != 0)
-        {
-            Vector3 relative = a.Linear + a.Angular.Z * c.PerpA - (b.Linear + b.Angular.Z * c.PerpB); // eq. 13–14
-            float old = c.FrictionImpulse1, limit = c.Friction * c.NormalImpulse;
-            c.FrictionImpulse1 = Math.Clamp(old - c.TangentMass1 * Vector3.Dot(relative, c.Tangent1), -limit, limit);
-            float change = c.FrictionImpulse1 - old;
-            Vector3 impulse = change * c.Tangent1;
-            a.Linear += impulse * a.InverseMass;
-            a.Angular += change * c.SpinA1;
-            b.Linear -= impulse * b.InverseMass;
-            b.Angular -= change * c.SpinB1;
-        }
-
-        Vector3 velocity = a.Linear + a.Angular.Z * c.PerpA - (b.Linear + b.Angular.Z * c.PerpB);
-        float oldNormal = c.NormalImpulse;
-        c.NormalImpulse = MathF.Max(oldNormal - c.NormalMass * Vector3.Dot(velocity, c.Normal), 0f);
-        if (c.NormalImpulse != oldNormal)
-        {
-            Vector3 impulse = (c.NormalImpulse - oldNormal) * c.Normal;
+            Vector3 impulse = (c.NormalImpulse - oldNormal) * c.Normal; // along n: no spin (r × n = 0)
             a.Linear += impulse * a.InverseMass;
             b.Linear -= impulse * b.InverseMass;
         }
@@ -180,7 +155,7 @@ public sealed partial class SequentialImpulseSolver
 
             ref VelocityState a = ref _bodies[c.A];
             ref VelocityState b = ref _bodies[c.B];
-            float normalVelocity = Vector3.Dot(ImpulseMath.RelativeVelocity(a, b, c.RA, c.RB), c.Normal);
+            float normalVelocity = Vector3.Dot(a.Linear - b.Linear, c.Normal); // r × n = 0: the spins add nothing along n
             if (normalVelocity >= 0)
             {
                 continue;
