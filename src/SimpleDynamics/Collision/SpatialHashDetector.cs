@@ -226,6 +226,12 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
                     }
 
                     int i = Math.Min(first.Body, second.Body), j = Math.Max(first.Body, second.Body);
+                    float reach = _bounds[i].Radius + _bounds[j].Radius;
+                    if (Vector3.DistanceSquared(_bounds[i].Centre, _bounds[j].Centre) >= reach * reach)
+                    {
+                        continue; // the spheres do not meet (they are never a contact, whichever cell owns them)
+                    }
+
                     if (!first.Cell.Equals(OwnerCell(i, j, inverseCellSize)))
                     {
                         continue; // this pair is reported in another cell

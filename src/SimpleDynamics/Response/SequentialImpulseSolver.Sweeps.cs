@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using SimpleDynamics.Collision;
 
 namespace SimpleDynamics.Response;
@@ -125,6 +126,7 @@ public sealed partial class SequentialImpulseSolver
     /// Applies the impulse P = p_n n + p_1 t_1 + p_2 t_2 to A and −P to B: eq. 6 for the velocities, eq. 15 for the
     /// spins through the prepared I⁻¹ (r × t) of each tangent (the normal part turns nothing: r × n = 0).
     /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // in the sweeps' inner loop
     private void Apply(ref ContactConstraint c, float normal, float tangent1, float tangent2)
     {
         ref VelocityState a = ref _bodies[c.A];
