@@ -55,15 +55,6 @@ public struct Contact
     /// <summary>For a plane contact: the plane's offset along the normal.</summary>
     internal float PlaneOffset;
 
-    /// <summary>
-    /// The bodies' indices in the world during step <see cref="EndsStep"/>, kept here by the impact pass, which visits
-    /// every contact every substep, so that it reads them from the contact array rather than from two body objects.
-    /// </summary>
-    internal int EndA, EndB;
-
-    /// <summary>The step whose indices <see cref="EndA"/> and <see cref="EndB"/> hold (0: none yet).</summary>
-    internal long EndsStep;
-
     /// <summary>For a plane contact: the plane's surface restitution, if it sets one.</summary>
     internal float? PlaneRestitution;
 

@@ -56,13 +56,13 @@ internal sealed partial class ImpactStepper
             bool pushed = false;
             for (int k = 0; k < _contactCount; k++)
             {
-                ref Contact contact = ref _contacts[k];
-                Ends(ref contact, out int a, out int b);
+                Ends(k, out int a, out int b);
                 if (_motion[a].Impacts < ImpactsPerBody && (b < 0 || _motion[b].Impacts < ImpactsPerBody))
                 {
                     continue;
                 }
 
+                ref Contact contact = ref _contacts[k];
                 Measure(ref contact, planes);
                 float smaller = b < 0 ? contact.BodyA.radius : MathF.Min(contact.BodyA.radius, contact.BodyB.radius);
                 if (contact.Penetration < -HeldDepthTolerance * smaller)

@@ -47,11 +47,11 @@ internal sealed partial class ImpactStepper
     /// <summary>Predicts the next impact of contact <paramref name="k"/> and queues it if it falls within the substep.</summary>
     private void Predict(int k)
     {
-        ref Contact contact = ref _contacts[k];
-        Ends(ref contact, out int a, out int b);
+        Ends(k, out int a, out int b);
         double time;
         if (b < 0)
         {
+            ref Contact contact = ref _contacts[k];
             if (Vector3.Dot(contact.Normal, _motion[a].Chord) >= 0)
             {
                 return; // moving away from the plane, or along it

@@ -77,9 +77,10 @@ internal sealed partial class ImpactStepper
         _contacts = contacts.Storage; // it may have grown
         int k = _contactCount++;
         EnsureContacts(_contactCount);
+        ReadEnds();
         if (_linked)
         {
-            Ends(ref _contacts[k], out int a, out int b);
+            Ends(k, out int a, out int b);
             Link(k, a, b);
         }
 

@@ -74,7 +74,10 @@ internal sealed partial class ImpactStepper
     private bool[] _held = new bool[InitialBodies];
     private int[] _head = new int[InitialBodies];
 
-    // Per contact: two list nodes each (one per end), and the depth limit.
+    // Per contact: the world indices of its two bodies, two list nodes (one per end), and the depth limit.
+    private int[] _ends = new int[2 * InitialContacts];
+    private int _endsCount; // contacts whose ends were read in step _endsStep
+    private long _endsStep;
     private int[] _next = new int[2 * InitialContacts];
     private float[] _limit = new float[InitialContacts];
     private Contact[] _contacts = Array.Empty<Contact>(); // the step's contacts (CollisionData.Storage), _contactCount of them
@@ -190,6 +193,7 @@ internal sealed partial class ImpactStepper
         _bodyCount = n;
         _linked = false;
         EnsureContacts(_contactCount);
+        ReadEnds();
         _queue.Clear();
         for (int k = 0; k < _contactCount; k++)
         {
@@ -210,7 +214,7 @@ internal sealed partial class ImpactStepper
         {
             EventQueue.Entry next = _queue.Pop();
             ref Contact contact = ref _contacts[next.Contact];
-            Ends(ref contact, out int a, out int b);
+            Ends(next.Contact, out int a, out int b);
             if (_motion[a].Version != next.VersionA || (b >= 0 && _motion[b].Version != next.VersionB))
             {
                 continue; // a body of this pair has collided since: its prediction is stale
