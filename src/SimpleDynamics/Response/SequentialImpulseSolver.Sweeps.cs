@@ -33,19 +33,25 @@ public sealed partial class SequentialImpulseSolver
         }
     }
 
+    /// <summary>Velocity sweeps done in the step begun last, for tests.</summary>
+    internal int SweepsThisStep { get; private set; }
+
     /// <summary>
     /// <see cref="VelocityIterations"/> Gauss–Seidel sweeps over every contact, bottom-up, then up to
-    /// <see cref="ExtraIterations"/> more until one has converged.
+    /// <see cref="ExtraIterations"/> more while the last one has not converged.
     /// </summary>
     private void Sweeps(int count)
     {
+        bool converged = false;
         for (int iteration = 0; iteration < _velocityIterations; iteration++)
         {
-            Sweep(count);
+            converged = Sweep(count);
         }
 
-        for (int extra = 0; extra < _extraIterations && !Sweep(count); extra++)
+        // Further sweeps only while the last one has not converged (a settled pile needs none).
+        for (int extra = 0; extra < _extraIterations && !converged; extra++)
         {
+            converged = Sweep(count);
         }
     }
 
@@ -55,6 +61,7 @@ public sealed partial class SequentialImpulseSolver
     /// </summary>
     private bool Sweep(int count)
     {
+        SweepsThisStep++;
         float largestChange = 0, largestImpulse = 0;
         for (int k = 0; k < count; k++)
         {

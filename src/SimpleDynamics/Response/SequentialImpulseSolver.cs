@@ -241,6 +241,7 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
         OrderAlongGravity(contacts, step.Gravity);
         ArrangeContacts(contacts);
         _prepared = 0;
+        SweepsThisStep = 0;
         PrepareConstraints(contacts);
     }
 

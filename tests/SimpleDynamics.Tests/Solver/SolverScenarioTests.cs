@@ -259,4 +259,19 @@ public class SolverScenarioTests
 
         return (min, max);
     }
+
+    [Fact]
+    public void A_settled_pile_spends_no_sweep_beyond_the_fixed_ones()
+    {
+        var solver = new SequentialImpulseSolver();
+        World world = Scenes.BallPit(100, planar: true, responder: solver);
+        world.SleepingEnabled = false;
+        for (int i = 0; i < 300; i++)
+        {
+            world.Step(Dt);
+        }
+
+        world.Step(Dt);
+        Assert.Equal(solver.VelocityIterations * world.Substeps, solver.SweepsThisStep);
+    }
 }
