@@ -21,6 +21,7 @@ internal sealed partial class ImpactStepper
     private const int JamSweeps = 8;
 
     private bool _jammed;
+    private bool[] _inJam = new bool[InitialContacts]; // per contact: an end is jammed (while settling)
 
     /// <summary>
     /// Whether an impact only stops a creep: its approach would sink the pair by less than
@@ -51,20 +52,32 @@ internal sealed partial class ImpactStepper
     /// </summary>
     private void SettleJams(ReadOnlySpan<StaticPlane> planes)
     {
+        // Which contacts have a jammed end, marked through the jammed bodies' lists and kept up to date as bodies
+        // join, so that a sweep reads one flag per contact.
+        EnsureLinked();
+        Array.Clear(_inJam, 0, _contactCount);
+        for (int i = 0; i < _bodyCount; i++)
+        {
+            if (_motion[i].Impacts >= ImpactsPerBody)
+            {
+                MarkContacts(i);
+            }
+        }
+
         for (int sweep = 0; sweep < JamSweeps; sweep++)
         {
             bool pushed = false;
             for (int k = 0; k < _contactCount; k++)
             {
-                Ends(k, out int a, out int b);
-                if (_motion[a].Impacts < ImpactsPerBody && (b < 0 || _motion[b].Impacts < ImpactsPerBody))
+                if (!_inJam[k])
                 {
                     continue;
                 }
 
+                Ends(k, out int a, out int b);
                 ref Contact contact = ref _contacts[k];
                 Measure(ref contact, planes);
-                float smaller = b < 0 ? contact.BodyA.radius : MathF.Min(contact.BodyA.radius, contact.BodyB.radius);
+                float smaller = b < 0 ? _motion[a].Radius : MathF.Min(_motion[a].Radius, _motion[b].Radius);
                 if (contact.Penetration < -HeldDepthTolerance * smaller)
                 {
                     continue; // apart: not part of the jam
@@ -73,10 +86,10 @@ internal sealed partial class ImpactStepper
                 if (StopApproach(ref contact, a, b))
                 {
                     // A body pushed by the jam joins it: its own contacts are swept too, down to the ground.
-                    _motion[a].Impacts = ImpactsPerBody;
+                    JoinJam(a);
                     if (b >= 0)
                     {
-                        _motion[b].Impacts = ImpactsPerBody;
+                        JoinJam(b);
                     }
 
                     pushed = true;
@@ -90,5 +103,22 @@ internal sealed partial class ImpactStepper
         }
 
         _jammed = false;
+    }
+
+    private void JoinJam(int i)
+    {
+        if (_motion[i].Impacts < ImpactsPerBody)
+        {
+            _motion[i].Impacts = ImpactsPerBody;
+            MarkContacts(i);
+        }
+    }
+
+    private void MarkContacts(int i)
+    {
+        for (int e = _head[i]; e >= 0; e = _next[e])
+        {
+            _inJam[e >> 1] = true;
+        }
     }
 }
