@@ -56,6 +56,7 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _bodies, capacity, 0);
         Buffers.ShrinkTo(ref _positions, capacity, 0);
         Buffers.ShrinkTo(ref _radii, capacity, 0);
+        Buffers.ShrinkTo(ref _inertiaScalars, capacity, 0);
         Buffers.ShrinkTo(ref _bodyOrder, capacity, 0);
         Buffers.ShrinkTo(ref _slotOf, capacity, 0);
         Buffers.ShrinkTo(ref _bodyHeights, capacity, 0);

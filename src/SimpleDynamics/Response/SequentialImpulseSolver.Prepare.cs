@@ -18,6 +18,7 @@ public sealed partial class SequentialImpulseSolver
     private int[] _slotOf = new int[InitialCapacity];
     private float[] _bodyHeights = new float[InitialCapacity];
     private float[] _radii = new float[InitialCapacity];
+    private float[] _inertiaScalars = new float[InitialCapacity]; // per slot: k when the world I⁻¹ is k·1 (spheres, the ground), else NaN
     private Contact[] _arranged = new Contact[InitialCapacity];
     private float[] _heights = new float[InitialCapacity];
     private int _prepared;
@@ -41,6 +42,7 @@ public sealed partial class SequentialImpulseSolver
         Buffers.EnsureCapacity(ref _slotOf, n);
         Buffers.EnsureCapacity(ref _bodyHeights, n);
         Buffers.EnsureCapacity(ref _radii, n + 1);
+        Buffers.EnsureCapacity(ref _inertiaScalars, n + 1);
         for (int i = 0; i < n; i++)
         {
             _bodyHeights[i] = -Vector3.Dot(bodies[i].position, gravity);
@@ -57,9 +59,12 @@ public sealed partial class SequentialImpulseSolver
         _bodies[0] = default;
         _positions[0] = Vector3.Zero;
         _radii[0] = 0;
+        _inertiaScalars[0] = 0;
         for (int i = 0; i < n; i++)
         {
-            _radii[_slotOf[i]] = bodies[i].radius;
+            RigidBody body = bodies[i];
+            _radii[_slotOf[i]] = body.radius;
+            _inertiaScalars[_slotOf[i]] = !body.IsDynamic ? 0f : body.isotropic ? body.inverseInertia.M11 : float.NaN;
         }
     }
 
@@ -243,12 +248,25 @@ public sealed partial class SequentialImpulseSolver
             else
             {
                 Vectors.Tangents(c.Normal, out c.Tangent1, out c.Tangent2);
-                c.SpinA1 = -c.RhoA * a.InverseInertia.Transform(c.Tangent2);
-                c.SpinB1 = c.RhoB * b.InverseInertia.Transform(c.Tangent2);
-                c.SpinA2 = c.RhoA * a.InverseInertia.Transform(c.Tangent1);
-                c.SpinB2 = -c.RhoB * b.InverseInertia.Transform(c.Tangent1);
-                c.TangentMass1 = InverseOrZero(inverseMassSum + Vector3.Dot(c.RhoB * c.SpinB1 - c.RhoA * c.SpinA1, c.Tangent2));
-                c.TangentMass2 = InverseOrZero(inverseMassSum + Vector3.Dot(c.RhoA * c.SpinA2 - c.RhoB * c.SpinB2, c.Tangent1));
+                float kA = _inertiaScalars[c.A], kB = _inertiaScalars[c.B];
+                if (!float.IsNaN(kA) && !float.IsNaN(kB))
+                {
+                    // Spheres (I⁻¹ = k·1, or 0 for the ground): both tangents see 1/m_A + 1/m_B + k_A ρ_A² + k_B ρ_B².
+                    c.SpinA1 = -c.RhoA * kA * c.Tangent2;
+                    c.SpinB1 = c.RhoB * kB * c.Tangent2;
+                    c.SpinA2 = c.RhoA * kA * c.Tangent1;
+                    c.SpinB2 = -c.RhoB * kB * c.Tangent1;
+                    c.TangentMass1 = c.TangentMass2 = InverseOrZero(inverseMassSum + kA * c.RhoA * c.RhoA + kB * c.RhoB * c.RhoB);
+                }
+                else
+                {
+                    c.SpinA1 = -c.RhoA * a.InverseInertia.Transform(c.Tangent2);
+                    c.SpinB1 = c.RhoB * b.InverseInertia.Transform(c.Tangent2);
+                    c.SpinA2 = c.RhoA * a.InverseInertia.Transform(c.Tangent1);
+                    c.SpinB2 = -c.RhoB * b.InverseInertia.Transform(c.Tangent1);
+                    c.TangentMass1 = InverseOrZero(inverseMassSum + Vector3.Dot(c.RhoB * c.SpinB1 - c.RhoA * c.SpinA1, c.Tangent2));
+                    c.TangentMass2 = InverseOrZero(inverseMassSum + Vector3.Dot(c.RhoA * c.SpinA2 - c.RhoB * c.SpinB2, c.Tangent1));
+                }
                 c.FrictionImpulse2 = Vector3.Dot(c.FrictionImpulse, c.Tangent2);
             }
 
