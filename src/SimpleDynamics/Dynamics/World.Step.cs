@@ -28,7 +28,8 @@ public sealed partial class World
     ///   the responder's <see cref="ICollisionResponder.SolveVelocities"/> (resting contacts),
     ///   move with impacts (every collision answered at its time of impact by
     ///   <see cref="ICollisionResponder.Collide"/>, see below),
-    ///   measure the contacts, and the responder's <see cref="ICollisionResponder.SolvePositions"/> (listing 2);</item>
+    ///   measure the contacts (unless the responder is the default solver, which measures its own), and the
+    ///   responder's <see cref="ICollisionResponder.SolvePositions"/> (listing 2);</item>
     /// <item>the responder's <see cref="ICollisionResponder.EndStep"/>, then measure the contacts for
     ///   <see cref="Collisions"/>, report the contact events (<see cref="ContactEvents"/>) and clear the forces;</item>
     /// <item>put to sleep the islands that have rested long enough, and shrink working arrays that have long been far
@@ -72,7 +73,7 @@ public sealed partial class World
                 IntegrateVelocities(h);
                 Run(step, StepStage.SolveVelocities);
                 _impacts.Move(step, Responder, h, (_substeps - substep) * h);
-                MeasureContacts();
+                MeasureContactsFor(Responder);
                 Run(step, StepStage.SolvePositions);
             }
 
@@ -161,6 +162,18 @@ public sealed partial class World
             }
 
             after[i] = body.linearVelocity;
+        }
+    }
+
+    /// <summary>
+    /// Measures the contacts at the bodies' new positions for the responder's position stage; the default solver
+    /// measures them itself from its own copies of the positions, so they are not measured for it.
+    /// </summary>
+    private void MeasureContactsFor(ICollisionResponder responder)
+    {
+        if (responder is not SequentialImpulseSolver)
+        {
+            MeasureContacts();
         }
     }
 
