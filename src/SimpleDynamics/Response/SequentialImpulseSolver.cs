@@ -105,8 +105,9 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
     }
 
     /// <summary>
-    /// A sweep has converged when no normal impulse changed by more than this fraction of the largest normal
-    /// impulse (≥ 0, default 1e-3; 0 spends every extra iteration).
+    /// A sweep has converged when, under gravity, no contact's normal velocity changed by more than this fraction of
+    /// g h, the speed gravity adds in a substep of length h; without gravity, when no normal impulse changed by more
+    /// than this fraction of the largest normal impulse (≥ 0, default 1e-3; 0 spends every extra iteration).
     /// </summary>
     public float ConvergenceTolerance
     {
