@@ -146,12 +146,15 @@ public class WorldLaws
 
     /// <summary>
     /// Nobody behind a wall or outside the box, no pair deeper than the slop (plus the allowance of DepthAllowance), and no
-    /// pair whose relative motion over the step went straight through: a single bounce keeps both ends of the
-    /// relative path on the outer side of the tangent plane at the contact, so a chord that passes within half the
-    /// sum of the radii of the other centre, with both ends outside, crossed the body.
+    /// pair whose relative motion over the step went straight through: for two bodies that nothing but each other
+    /// pushed in the step, a single bounce keeps both ends of the relative path on the outer side of the tangent plane
+    /// at the contact, so a chord that passes within half the sum of the radii of the other centre, with both ends
+    /// outside, crossed the body. (A body that bounced off a wall or a third body in the step may end anywhere: its
+    /// pairs are not judged by their chord.)
     /// </summary>
     private static void CheckNothingPassedThrough(WorldCase c, World world, RigidBody[] bodies, Vector3[] before, float slop, float allowance, string at)
     {
+        int[][] pushedBy = PushPartners(world, bodies);
         for (int i = 0; i < bodies.Length; i++)
         {
             RigidBody a = bodies[i];
@@ -170,6 +173,11 @@ public class WorldLaws
                 Law.Holds(depth <= slop + allowance * MathF.Min(a.Radius, b.Radius) + 1e-5f * reach,
                     $"{at}: bodies {i} and {j} overlap by {depth:R} m");
                 Vector3 start = before[i] - before[j], end = a.Position - b.Position;
+                if (!MetOnlyEachOther(pushedBy, i, j))
+                {
+                    continue; // a bounce off a third body or a wall bends the relative path: the chord says nothing
+                }
+
                 Law.Holds(DistanceToSegment(start, end) >= 0.5f * reach || start.Length() < reach || end.Length() < reach,
                     $"{at}: bodies {i} and {j} passed through each other (relative position {start} → {end})");
             }
@@ -185,6 +193,36 @@ public class WorldLaws
     /// </summary>
     private static float DepthAllowance(RigidBody[] bodies) =>
         bodies.Max(b => b.Mass) <= 1e3f * bodies.Min(b => b.Mass) ? 1e-6f : 1e-2f;
+
+    /// <summary>
+    /// For each body, what pushed it in the last step: the indices of the bodies (and −1 − p for plane p) of its
+    /// contacts whose normal impulse over the step is positive (impacts, the solver's resting contacts, jams).
+    /// </summary>
+    private static int[][] PushPartners(World world, RigidBody[] bodies)
+    {
+        var partners = bodies.Select(_ => new List<int>()).ToArray();
+        foreach (Contact contact in world.Collisions.Contacts)
+        {
+            if (!(contact.NormalImpulse > 0))
+            {
+                continue;
+            }
+
+            int a = Array.IndexOf(bodies, contact.BodyA);
+            int b = contact.IsPlaneContact ? -1 - contact.PlaneIndex : Array.IndexOf(bodies, contact.BodyB);
+            partners[a].Add(b);
+            if (b >= 0)
+            {
+                partners[b].Add(a);
+            }
+        }
+
+        return partners.Select(list => list.ToArray()).ToArray();
+    }
+
+    /// <summary>Whether bodies i and j were pushed by nothing but each other in the step (so their relative path was a chord, or two chords with one bounce).</summary>
+    private static bool MetOnlyEachOther(int[][] pushedBy, int i, int j) =>
+        pushedBy[i].All(k => k == j) && pushedBy[j].All(k => k == i);
 
     private static float DistanceToSegment(Vector3 a, Vector3 b)
     {
