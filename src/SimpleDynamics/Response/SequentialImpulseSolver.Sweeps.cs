@@ -64,7 +64,7 @@ public sealed partial class SequentialImpulseSolver
     /// |ΔP_n| (1/m_A + 1/m_B), against the speed gravity adds in a substep, g h: a scale every contact of a pile shares.
     /// Measured against the largest impulse instead, the top of a deep pile (whose impulses are a small fraction of
     /// the bottom's) counted as converged while it still sank: a 4,000-disc pit kept creeping at 1–2 cm/s with a
-    /// hundred impacts per step; with this measure it is at rest (under 1 mm/s, no impacts) 9 s after its pour began.
+    /// hundred impacts per step; with this measure it is at rest (every ball under 1 mm/s) 9 s after its pour began.
     /// </remarks>
     private bool Sweep(int count)
     {
