@@ -29,9 +29,11 @@ internal sealed partial class ImpactStepper
     /// </summary>
     private bool Creeping(in Contact contact, int a, int b)
     {
-        float smaller = b < 0 ? _motion[a].Radius : MathF.Min(_motion[a].Radius, _motion[b].Radius);
-        return -contact.ApproachVelocity * (float)_h < HeldDepthTolerance * smaller;
+        return -contact.ApproachVelocity * (float)_h < HeldDepthTolerance * SmallerRadius(a, b);
     }
+
+    /// <summary>The smaller radius of the pair's bodies (body a's alone against a plane, b &lt; 0).</summary>
+    private float SmallerRadius(int a, int b) => b < 0 ? _motion[a].Radius : MathF.Min(_motion[a].Radius, _motion[b].Radius);
 
     /// <summary>A body that has used up its impacts stays where it is for the rest of the substep.</summary>
     private void HoldStill(int i)
@@ -77,8 +79,7 @@ internal sealed partial class ImpactStepper
                 Ends(k, out int a, out int b);
                 ref Contact contact = ref _contacts[k];
                 Measure(ref contact, planes);
-                float smaller = b < 0 ? _motion[a].Radius : MathF.Min(_motion[a].Radius, _motion[b].Radius);
-                if (contact.Penetration < -HeldDepthTolerance * smaller)
+                if (contact.Penetration < -HeldDepthTolerance * SmallerRadius(a, b))
                 {
                     continue; // apart: not part of the jam
                 }
