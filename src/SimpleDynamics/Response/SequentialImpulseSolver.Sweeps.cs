@@ -163,11 +163,24 @@ public sealed partial class SequentialImpulseSolver
     /// Shock propagation in velocity: bottom-up, each resting contact that carries weight (normal within about 45° of
     /// vertical) and still approaches because its upper body moves down into the lower one is stopped by slowing the
     /// upper body alone, as if the lower one, already final, were immovable. The upper body is slowed at most to rest
-    /// along the normal, never thrown up, so this only ever removes kinetic energy.
+    /// along the normal, never thrown up, so this only ever removes kinetic energy. Returns whether it slowed any body
+    /// by more than the convergence tolerance (see <see cref="ConvergenceTolerance"/>).
     /// </summary>
-    private void PropagateShock(int count)
+    /// <remarks>
+    /// A correction along an inclined normal also turns the upper body sideways, into the neighbours whose contacts
+    /// the pass leaves alone (those that carry no weight) and, slowed, into what rests on it. So when the pass changed
+    /// anything, the caller sweeps once more: that sweep stops those new approaches (a settled pile needs no such
+    /// sweep: the pass then changes nothing). Without it, about ninety contacts per substep of the 8,000-disc 2-D pit
+    /// (90 discs deep) approached faster than the impact pass lets a resting pile creep, and became impacts. Measured
+    /// over seconds 15–25 after the pour began (two pours, seeds 2 and 3): 570–640 impacts per step, 2,060 discs
+    /// faster than 5 cm/s, rms speed 3.9–4.5 cm/s, deepest overlap 2.7–4.1 mm; with the sweep, 50–200 impacts,
+    /// 80–500 discs, 1.1–2.4 cm/s and 1.2–1.8 mm. Such a pile still does not come to rest.
+    /// </remarks>
+    private bool PropagateShock(int count)
     {
         float weight = 0.7f * _gravity.Length();
+        float tolerance = _convergenceTolerance * _gravity.Length() * _step!.SubstepLength;
+        bool changed = false;
         for (int k = 0; k < count; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
@@ -184,17 +197,24 @@ public sealed partial class SequentialImpulseSolver
                 continue;
             }
 
+            float slowing = 0;
             if (c.AIsUpper && a.InverseMass > 0)
             {
                 float sinking = -Vector3.Dot(a.Linear, c.Normal); // A's speed into B (n points from B to A)
-                a.Linear += MathF.Min(-normalVelocity, MathF.Max(sinking, 0f)) * c.Normal;
+                slowing = MathF.Min(-normalVelocity, MathF.Max(sinking, 0f));
+                a.Linear += slowing * c.Normal;
             }
             else if (!c.AIsUpper && b.InverseMass > 0)
             {
                 float sinking = Vector3.Dot(b.Linear, c.Normal); // B's speed into A
-                b.Linear -= MathF.Min(-normalVelocity, MathF.Max(sinking, 0f)) * c.Normal;
+                slowing = MathF.Min(-normalVelocity, MathF.Max(sinking, 0f));
+                b.Linear -= slowing * c.Normal;
             }
+
+            changed |= slowing > tolerance;
         }
+
+        return changed;
     }
 
     private static void ClampFriction(ref ContactConstraint c)

@@ -256,9 +256,9 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
         MeasureConstraints(contacts);
         WarmStart(contacts.Length);
         Sweeps(contacts.Length);
-        if (step.Gravity != Vector3.Zero)
+        if (step.Gravity != Vector3.Zero && PropagateShock(contacts.Length))
         {
-            PropagateShock(contacts.Length);
+            Sweep(contacts.Length); // the contacts the shock pass turned into approaches (see PropagateShock)
         }
 
         AddToStepTotals(contacts.Length);
