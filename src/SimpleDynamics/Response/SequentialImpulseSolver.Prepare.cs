@@ -24,6 +24,10 @@ public sealed partial class SequentialImpulseSolver
     private int _prepared;
     private Vector3 _gravity;
     private bool _planar;
+    private int _extraSweeps; // this step's budget of extra sweeps per substep (see ExtraSweepsFor)
+
+    /// <summary>The extra sweeps per substep the last step began could spend (see <see cref="DeepPileLayers"/>), for tests.</summary>
+    internal int ExtraSweepBudget => _extraSweeps;
 
     /// <summary>Whether the last step began was solved on the planar path (see IsPlanar), for tests.</summary>
     internal bool SolvedPlanar => _planar;
@@ -131,12 +135,30 @@ public sealed partial class SequentialImpulseSolver
     {
         Buffers.EnsureCapacity(ref _order, contacts.Length);
         Buffers.EnsureCapacity(ref _heights, contacts.Length);
+        float lowest = float.PositiveInfinity, highest = float.NegativeInfinity, diameters = 0;
         for (int i = 0; i < contacts.Length; i++)
         {
-            _heights[i] = -Vector3.Dot(contacts[i].Point, gravity);
+            float height = -Vector3.Dot(contacts[i].Point, gravity);
+            _heights[i] = height;
+            lowest = MathF.Min(lowest, height);
+            highest = MathF.Max(highest, height);
+            diameters += 2 * contacts[i].BodyA.radius;
         }
 
         _heightOrder.Sort(_heights.AsSpan(0, contacts.Length), _order.AsSpan(0, contacts.Length));
+        float g = gravity.Length();
+        _extraSweeps = ExtraSweepsFor(contacts.Length == 0 || g == 0 ? 0 : (highest - lowest) / (g * diameters / contacts.Length));
+    }
+
+    /// <summary>
+    /// The extra sweeps a substep may spend (see <see cref="ExtraIterations"/>): <see cref="ExtraIterations"/> for a
+    /// pile up to <see cref="DeepPileLayers"/> bodies deep, proportionally more for a deeper one. <paramref name="layers"/>
+    /// is the height the contacts span along gravity over the mean diameter of their bodies (0 without gravity).
+    /// </summary>
+    private int ExtraSweepsFor(float layers)
+    {
+        float scale = layers > DeepPileLayers ? layers / DeepPileLayers : 1f;
+        return scale < 64f ? (int)MathF.Ceiling(_extraIterations * scale) : 64 * _extraIterations; // NaN-free for any world
     }
 
     /// <summary>

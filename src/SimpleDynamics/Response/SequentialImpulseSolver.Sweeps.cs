@@ -49,7 +49,7 @@ public sealed partial class SequentialImpulseSolver
         }
 
         // Further sweeps only while the last one has not converged (a settled pile needs none).
-        for (int extra = 0; extra < _extraIterations && !converged; extra++)
+        for (int extra = 0; extra < _extraSweeps && !converged; extra++)
         {
             converged = Sweep(count);
         }
