@@ -7,22 +7,13 @@ namespace SimpleDynamics.Benchmarks;
 /// <summary>
 /// Sleeping: one <see cref="World.Step"/> of dt = 1/60 s on the settled 2-D ball pit of <see cref="BallPit2D"/>,
 /// awake (<c>Asleep = false</c>: sleeping off, every ball stepped) and asleep (<c>Asleep = true</c>: the same pit
-/// after it has fallen asleep). Both start from the same pour (<see cref="Warm.Pour"/>, sleeping off, which is
-/// deterministic); the asleep case then turns sleeping on and steps until every ball sleeps.
+/// after it has fallen asleep at the default <see cref="World.SleepSpeed"/> and <see cref="World.TimeToSleep"/>). Both
+/// start from the same pour (<see cref="Warm.Pour"/>, sleeping off, which is deterministic); the asleep case then
+/// turns sleeping on and steps until every ball sleeps.
 /// </summary>
-/// <remarks>
-/// The settled pit still creeps: clusters of balls compact in bursts at 4–40 cm/s (seen on the 1,000-ball pit for
-/// 30 s after the pour), and all its balls touch, so they form one island that sleeps only in a half second in which
-/// none of them moves faster than <see cref="World.SleepSpeed"/>. With the default 5 cm/s that half second may not
-/// come for a long time; the asleep case falls asleep with <see cref="PitSleepSpeed"/> instead. The cost of a
-/// sleeping step does not depend on the threshold that put the pit to sleep.
-/// </remarks>
 [MemoryDiagnoser]
 public class Sleeping
 {
-    /// <summary>The sleep threshold (m/s) the asleep case falls asleep with.</summary>
-    public const float PitSleepSpeed = 0.5f;
-
     private string _key = "";
     private string _startContacts = "", _startPenetration = "";
 
@@ -45,7 +36,6 @@ public class Sleeping
         if (Asleep)
         {
             World.SleepingEnabled = true;
-            World.SleepSpeed = PitSleepSpeed;
             for (int i = 0; i < Warm.MaxSteps && World.SleepingBodyCount < N; i++, steps++)
             {
                 World.Step(Warm.Dt);
