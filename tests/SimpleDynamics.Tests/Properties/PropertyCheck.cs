@@ -12,11 +12,13 @@ namespace SimpleDynamics.Tests.Properties;
 /// reproducible random seed. Every test passes its own fixed seed, so a run is deterministic; setting the
 /// environment variable FSCHECK_REPLAY="seed,gamma" (the pair printed on failure) replays that run instead.
 /// On failure the exception message names the property, the replay pair and how to replay it, followed by
-/// FsCheck's report (the failing case and the law's message).
+/// FsCheck's report (the failing case and the law's message). Setting FSCHECK_MAXTEST=n runs every property over n
+/// cases instead of its own count, to search deeper than CI does.
 /// </summary>
 internal static class PropertyCheck
 {
     public const string ReplayVariable = "FSCHECK_REPLAY";
+    public const string MaxTestVariable = "FSCHECK_MAXTEST";
 
     /// <summary>An odd gamma for FsCheck's split-mix generator; any odd number works.</summary>
     private const ulong DefaultGamma = 0x9E3779B97F4A7C15UL;
@@ -24,6 +26,11 @@ internal static class PropertyCheck
     public static void Run<T>(Gen<T> generator, Action<T> law, ulong seed, int maxTest = 500, [CallerMemberName] string name = "")
     {
         Rnd rnd = ReplayFromEnvironment() ?? new Rnd(seed, DefaultGamma);
+        if (int.TryParse(Environment.GetEnvironmentVariable(MaxTestVariable), NumberStyles.None, CultureInfo.InvariantCulture, out int deeper) && deeper > 0)
+        {
+            maxTest = deeper;
+        }
+
         Config config = Config.QuickThrowOnFailure
             .WithMaxTest(maxTest)
             .WithQuietOnSuccess(true)
