@@ -60,6 +60,7 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _bodyOrder, capacity, 0);
         Buffers.ShrinkTo(ref _slotOf, capacity, 0);
         Buffers.ShrinkTo(ref _bodyHeights, capacity, 0);
+        Buffers.ShrinkTo(ref _anchorDistance, capacity, 0);
     }
 
     private void ShrinkContacts(int capacity)

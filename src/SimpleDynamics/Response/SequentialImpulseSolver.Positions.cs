@@ -40,6 +40,11 @@ public sealed partial class SequentialImpulseSolver
             CorrectPosition(ref c, shock: carriesWeight, factor: 1f);
         }
 
+        if (gravityLength == 0)
+        {
+            PropagateFromAnchors(count, bodies.Length + 1); // see SequentialImpulseSolver.Anchoring.cs
+        }
+
         for (int i = 0; i < bodies.Length; i++)
         {
             if (bodies[i].IsDynamic)
