@@ -117,9 +117,14 @@ public class WorldLaws
             double e0 = Energy(world, bodies);
             double eScale = Measure.KineticEnergy(bodies) + bodies.Sum(b => b.Mass * world.Gravity.Length() * (WorldCase.BoxSize + 1.0)) + 1e-12;
             Vector3[] before = bodies.Select(b => b.Position).ToArray();
+            double rounding = 0, energyRounding = 0;
             for (int step = 0; step < Steps; step++)
             {
+                double roundingBefore = StateRounding(bodies, origin), energyRoundingBefore = EnergyRounding(world, bodies);
                 world.Step(c.Dt);
+                int updates = c.Substeps + 2 * world.ImpactCount;
+                rounding += updates * Math.Max(roundingBefore, StateRounding(bodies, origin));
+                energyRounding += updates * Math.Max(energyRoundingBefore, EnergyRounding(world, bodies));
                 string at = $"step {step}";
                 Law.Holds(bodies.All(b => Vectors3.Finite(b.Position) && Vectors3.Finite(b.LinearVelocity) && Vectors3.Finite(b.AngularVelocity)), $"{at}: NaN");
                 if (free)
@@ -127,11 +132,11 @@ public class WorldLaws
                     pScale = Math.Max(pScale, Measure.MomentumScale(bodies));
                     lScale = Math.Max(lScale, Measure.AngularMomentumScale(origin, bodies));
                     Law.Near(p0, Measure.Momentum(bodies), 1e-5 * pScale, $"{at}: linear momentum");
-                    Law.Near(l0, Measure.AngularMomentum(origin, bodies), 1e-5 * lScale, $"{at}: angular momentum about {origin}");
+                    Law.Near(l0, Measure.AngularMomentum(origin, bodies), 1e-5 * lScale + rounding, $"{at}: angular momentum about {origin}");
                 }
 
                 double energy = Energy(world, bodies);
-                Law.Holds(energy <= e0 + 1e-5 * eScale, $"{at}: mechanical energy rose from {e0:R} to {energy:R} J (scale {eScale:R})");
+                Law.Holds(energy <= e0 + 1e-5 * eScale + energyRounding, $"{at}: mechanical energy rose from {e0:R} to {energy:R} J (scale {eScale:R}, float32 rounding budget {energyRounding:R} J)");
                 CheckNothingPassedThrough(c, world, bodies, before, solver.Slop, DepthAllowance(bodies), at);
                 for (int i = 0; i < bodies.Length; i++)
                 {
@@ -139,6 +144,47 @@ public class WorldLaws
                 }
             }
         }, seed: 801, maxTest: 150);
+
+    /// <summary>
+    /// How much rounding the float32 state can add to the angular momentum about <paramref name="origin"/> in one
+    /// update of every body's position and velocity: rounding x moves it by up to √3·2⁻²⁴|x| (half an ulp per
+    /// component), which changes m x × v by up to that times m|v|; rounding v, ω changes m (x − o) × v and I ω by
+    /// √3·2⁻²⁴ m|x − o||v| and √3·2⁻²⁴|I||ω|. A step makes one such update per substep, and two more bodies' worth
+    /// per impact (both bodies are advanced to it), so the bound on the angular momentum grows by that many of these.
+    /// (Measured in world 272 of 2,000, seed 801: four spheres with friction drifted by 1.01e-5 of Σ m|r||v| over 38
+    /// steps of 8 substeps, within this budget; the fixed 1e-5 alone is below what float32 state can keep.)
+    /// </summary>
+    private static double StateRounding(RigidBody[] bodies, D3 origin)
+    {
+        const double halfUlp = 1.0 / (1 << 24);
+        double sum = 0;
+        foreach (RigidBody b in bodies)
+        {
+            double speed = D3.From(b.LinearVelocity).Length;
+            sum += b.Mass * speed * (D3.From(b.Position).Length + (D3.From(b.Position) - origin).Length)
+                + Measure.InertiaWorld(b).Norm() * D3.From(b.AngularVelocity).Length;
+        }
+
+        return Math.Sqrt(3) * halfUlp * sum;
+    }
+
+    /// <summary>
+    /// The same for the mechanical energy: rounding x changes m g·x by up to √3·2⁻²⁴ m|g||x|, rounding v and ω change
+    /// ½ m v² and ½ ω·I ω by up to √3·2⁻²⁴ m v² and √3·2⁻²⁴ |I| ω². (Measured in world 868 of 2,000, seed 801: eight
+    /// spheres up to 760 kg falling freely for 34 steps of 8 substeps gained 0.9 J of 48,566 J, 1.9e-5 of it.)
+    /// </summary>
+    private static double EnergyRounding(World world, RigidBody[] bodies)
+    {
+        const double halfUlp = 1.0 / (1 << 24);
+        double g = world.Gravity.Length(), sum = 0;
+        foreach (RigidBody b in bodies)
+        {
+            double speed = D3.From(b.LinearVelocity).Length, spin = D3.From(b.AngularVelocity).Length;
+            sum += b.Mass * (g * D3.From(b.Position).Length + speed * speed) + Measure.InertiaWorld(b).Norm() * spin * spin;
+        }
+
+        return Math.Sqrt(3) * halfUlp * sum;
+    }
 
     /// <summary>Mechanical energy with heights measured from the floor, so that it is positive and a relative bound means something.</summary>
     private static double Energy(World world, RigidBody[] bodies) =>
