@@ -129,7 +129,8 @@ public sealed partial class SequentialImpulseSolver
 
     /// <summary>
     /// Visits contacts from the bottom of a pile upwards (along gravity), so that each Gauss–Seidel sweep carries
-    /// support up through a stack instead of down through it.
+    /// support up through a stack instead of down through it. The heights also give the pile's depth, which sets the
+    /// step's budget of extra sweeps (see <see cref="ExtraSweepsFor"/>).
     /// </summary>
     private void OrderAlongGravity(Span<Contact> contacts, Vector3 gravity)
     {
