@@ -60,8 +60,9 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
     /// sweeps carry it down only a few layers each, so a deep pile that is given a fixed budget never converges.
     /// Measured on the 8,000-disc 2-D pit (about 76 diameters deep), 15–18 s after its pour began: with 8 extra sweeps
     /// it still moved, its position pass lifting back by 8–10 J a second what sank through unconverged contacts; with
-    /// 8 per 32 layers (19) it still crept (1–1.5 J a second); with 8 per 16 layers (38), as with 16 or 24 for every
-    /// pile, it lay still and the position pass had nothing to do. A settled pile converges within the fixed sweeps
+    /// 8 per 32 layers (19) it still crept (1–1.5 J a second), with 16 for every pile nearly not (0.03–0.2 J a
+    /// second, falling); with 8 per 16 layers (38), as with 24 for every pile, it lay still and the position pass had
+    /// nothing to do. A settled pile converges within the fixed sweeps
     /// and spends none of them.
     /// </summary>
     public const float DeepPileLayers = 16f;
