@@ -18,7 +18,11 @@ namespace SimpleDynamics.Response;
 /// shock propagation of Guendelman, Bridson and Fedkiw ("Nonconvex Rigid Bodies with Stacking", SIGGRAPH 2003,
 /// https://physbam.stanford.edu/~fedkiw/papers/stanford2003-01.pdf) with distance from the walls for height. It moves
 /// positions only; momentum is not conserved by walls anyway, and bodies that touch nothing immovable are left alone,
-/// so a free cluster keeps its momentum.
+/// so a free cluster keeps its momentum. The distances come from one breadth-first walk over the touching contacts,
+/// listed per body by a counting sort: a few passes over the contacts, and only in a substep that needs it.
+/// <para>Under gravity the pass is not run (the shock sweep answers stacks there). Tried there too, it kept all 2,000
+/// generated worlds within their bounds, world 991 included (a 0.38 kg disc 1.2 mm into a wall, a 208 kg one in its box),
+/// but it fought the shock sweep in deep piles: 4,000 discs poured 200 deep no longer fell asleep within 12 s.</para>
 /// </remarks>
 public sealed partial class SequentialImpulseSolver
 {
@@ -26,6 +30,10 @@ public sealed partial class SequentialImpulseSolver
     private const int AnchorLevels = 64;
 
     private int[] _anchorDistance = new int[InitialCapacity]; // per slot
+    private int[] _touchingStart = new int[InitialCapacity]; // per slot + 1: where its touching contacts begin in _touching
+    private int[] _touchingFill = new int[InitialCapacity];
+    private int[] _touching = new int[InitialCapacity]; // per touching contact, twice: the contact, listed under each end
+    private int[] _anchorQueue = new int[InitialCapacity];
 
     private void PropagateFromAnchors(int count, int slots)
     {
@@ -34,61 +42,80 @@ public sealed partial class SequentialImpulseSolver
             return;
         }
 
+        ListTouchingContacts(count, slots);
+
+        // Breadth-first from everything immovable, so bodies come nearest first; each contact between distances d and
+        // d + 1 is answered once, from its nearer end, by moving only the body at d + 1.
         Buffers.EnsureCapacity(ref _anchorDistance, slots);
+        Buffers.EnsureCapacity(ref _anchorQueue, slots);
+        int head = 0, tail = 0;
         for (int s = 0; s < slots; s++)
         {
-            _anchorDistance[s] = _bodies[s].InverseMass == 0 ? 0 : int.MaxValue;
-        }
-
-        // Distances by relaxation over the touching contacts (Bellman–Ford; each pass settles at least one more level).
-        int farthest = 0;
-        for (int pass = 0; pass < AnchorLevels; pass++)
-        {
-            bool changed = false;
-            for (int k = 0; k < count; k++)
+            bool anchor = _bodies[s].InverseMass == 0 && _touchingStart[s + 1] > _touchingStart[s];
+            _anchorDistance[s] = anchor ? 0 : int.MaxValue;
+            if (anchor)
             {
-                ref ContactConstraint c = ref _constraints[k];
-                if (Depth(ref c, out _) < 0)
-                {
-                    continue;
-                }
-
-                int a = _anchorDistance[c.A], b = _anchorDistance[c.B];
-                if (a != int.MaxValue && a + 1 < b)
-                {
-                    _anchorDistance[c.B] = a + 1;
-                    farthest = Math.Max(farthest, a + 1);
-                    changed = true;
-                }
-                else if (b != int.MaxValue && b + 1 < a)
-                {
-                    _anchorDistance[c.A] = b + 1;
-                    farthest = Math.Max(farthest, b + 1);
-                    changed = true;
-                }
-            }
-
-            if (!changed)
-            {
-                break;
+                _anchorQueue[tail++] = s;
             }
         }
 
-        // Nearest first: each contact between distances d and d + 1 moves only the body at d + 1.
-        for (int level = 1; level <= farthest; level++)
+        while (head < tail)
         {
-            for (int k = 0; k < count; k++)
+            int u = _anchorQueue[head++];
+            int next = _anchorDistance[u] + 1;
+            if (next > AnchorLevels)
             {
-                ref ContactConstraint c = ref _constraints[k];
-                int a = _anchorDistance[c.A], b = _anchorDistance[c.B];
-                if (a == level && b == level - 1)
+                continue;
+            }
+
+            for (int e = _touchingStart[u]; e < _touchingStart[u + 1]; e++)
+            {
+                ref ContactConstraint c = ref _constraints[_touching[e]];
+                int v = c.A == u ? c.B : c.A;
+                if (_anchorDistance[v] == int.MaxValue)
                 {
-                    MoveFarther(ref c, moveA: true);
+                    _anchorDistance[v] = next;
+                    _anchorQueue[tail++] = v;
                 }
-                else if (b == level && a == level - 1)
+
+                if (_anchorDistance[v] == next)
                 {
-                    MoveFarther(ref c, moveA: false);
+                    MoveFarther(ref c, moveA: v == c.A);
                 }
+            }
+        }
+    }
+
+    /// <summary>Lists each slot's touching contacts (a counting sort by slot: two passes over the contacts).</summary>
+    private void ListTouchingContacts(int count, int slots)
+    {
+        Buffers.EnsureCapacity(ref _touchingStart, slots + 1);
+        Buffers.EnsureCapacity(ref _touchingFill, slots);
+        Buffers.EnsureCapacity(ref _touching, 2 * count);
+        Array.Clear(_touchingStart, 0, slots + 1);
+        for (int k = 0; k < count; k++)
+        {
+            ref ContactConstraint c = ref _constraints[k];
+            if (Depth(ref c, out _) >= 0)
+            {
+                _touchingStart[c.A + 1]++;
+                _touchingStart[c.B + 1]++;
+            }
+        }
+
+        for (int s = 0; s < slots; s++)
+        {
+            _touchingStart[s + 1] += _touchingStart[s];
+            _touchingFill[s] = _touchingStart[s];
+        }
+
+        for (int k = 0; k < count; k++)
+        {
+            ref ContactConstraint c = ref _constraints[k];
+            if (Depth(ref c, out _) >= 0)
+            {
+                _touching[_touchingFill[c.A]++] = k;
+                _touching[_touchingFill[c.B]++] = k;
             }
         }
     }

@@ -61,6 +61,9 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _slotOf, capacity, 0);
         Buffers.ShrinkTo(ref _bodyHeights, capacity, 0);
         Buffers.ShrinkTo(ref _anchorDistance, capacity, 0);
+        Buffers.ShrinkTo(ref _anchorQueue, capacity, 0);
+        Buffers.ShrinkTo(ref _touchingStart, capacity + 1, 0);
+        Buffers.ShrinkTo(ref _touchingFill, capacity, 0);
     }
 
     private void ShrinkContacts(int capacity)
@@ -69,5 +72,6 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _order, capacity, 0);
         Buffers.ShrinkTo(ref _heights, capacity, 0);
         Buffers.ShrinkTo(ref _arranged, capacity, 0);
+        Buffers.ShrinkTo(ref _touching, 2 * capacity, 0);
     }
 }
