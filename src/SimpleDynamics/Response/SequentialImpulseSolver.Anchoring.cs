@@ -150,7 +150,7 @@ public sealed partial class SequentialImpulseSolver
         return false;
     }
 
-    /// <summary>The contact's depth at the working positions (negative when apart), and its normal.</summary>
+    /// <summary>The contact's depth at the working positions (negative when apart), and its normal; every position sweep measures through it.</summary>
     private float Depth(ref ContactConstraint c, out Vector3 normal)
     {
         if (c.IsPlaneContact)

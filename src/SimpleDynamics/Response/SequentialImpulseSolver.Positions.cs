@@ -1,7 +1,6 @@
 using System;
 using System.Numerics;
 using SimpleDynamics.Bodies;
-using SimpleDynamics.Collision;
 
 namespace SimpleDynamics.Response;
 
@@ -80,20 +79,7 @@ public sealed partial class SequentialImpulseSolver
             return;
         }
 
-        ref Vector3 positionA = ref _positions[c.A];
-        ref Vector3 positionB = ref _positions[c.B];
-        float penetration;
-        Vector3 normal;
-        if (c.IsPlaneContact)
-        {
-            normal = c.Normal;
-            penetration = ContactGeometry.Unchecked.PlanePenetration(positionA, c.RadiusA, normal, c.PlaneOffset);
-        }
-        else
-        {
-            penetration = ContactGeometry.Unchecked.CirclePenetration(positionA, c.RadiusA, positionB, c.RadiusB, out normal);
-        }
-
+        float penetration = Depth(ref c, out Vector3 normal);
         float correction = shock ? penetration - _slop : MathF.Min(factor * (penetration - _slop), _maxCorrection);
         if (correction <= 0)
         {
@@ -101,7 +87,7 @@ public sealed partial class SequentialImpulseSolver
         }
 
         float share = correction / inverseMassSum;
-        positionA += normal * (share * inverseMassA);
-        positionB -= normal * (share * inverseMassB);
+        _positions[c.A] += normal * (share * inverseMassA);
+        _positions[c.B] -= normal * (share * inverseMassB);
     }
 }
