@@ -10,8 +10,8 @@ namespace SimpleDynamics;
 /// </summary>
 /// <remarks>
 /// Union-find with union by size and path halving (Tarjan): each body starts as its own island and every touching
-/// contact merges two; a find walks to the island's root. Every array only grows, so a warm world allocates
-/// nothing here.
+/// contact merges two; a find walks to the island's root. The arrays grow and are kept, so a warm world allocates
+/// nothing here; <see cref="TrimExcess"/> gives their spare room back.
 /// </remarks>
 internal sealed class Islands
 {
@@ -30,6 +30,18 @@ internal sealed class Islands
         Buffers.EnsureCapacity(ref _size, bodies);
         Buffers.EnsureCapacity(ref _first, bodies);
         Buffers.EnsureCapacity(ref _freeIds, bodies);
+    }
+
+    /// <summary>
+    /// Gives back the room beyond <paramref name="bodies"/> bodies, keeping every sleeping island's record (ids up to
+    /// the highest in use, and the free ones among them).
+    /// </summary>
+    public void TrimExcess(int bodies)
+    {
+        Buffers.Shrink(ref _parent, bodies);
+        Buffers.Shrink(ref _size, bodies);
+        Buffers.Shrink(ref _first, _idCount);
+        Buffers.Shrink(ref _freeIds, _freeCount);
     }
 
     /// <summary>Makes each of the first <paramref name="n"/> slots an island of its own.</summary>

@@ -14,7 +14,7 @@ public sealed partial class World
 
     /// <summary>
     /// Releases the spare room of the world's working arrays (bodies, planes, <see cref="Collisions"/>, the contact
-    /// events, the queries' grid and the impact pass) and asks the <see cref="Responder"/> and the
+    /// events, sleeping, the queries' grid and the impact pass) and asks the <see cref="Responder"/> and the
     /// <see cref="Detector"/> to release what they keep for this world, if they implement <see cref="ITrimmable"/>.
     /// </summary>
     /// <remarks>
@@ -32,6 +32,7 @@ public sealed partial class World
         Buffers.Shrink(ref _planes, _planeCount);
         Collisions.TrimExcess();
         TrimEventBuffers();
+        TrimSleepBuffers(_bodyCount);
         _queryGrid.TrimExcess();
         _impacts.TrimExcess();
         (Responder as ITrimmable)?.TrimExcess(this);
@@ -44,7 +45,13 @@ public sealed partial class World
     /// </summary>
     private void ShrinkIdleBuffers()
     {
+        int bodyRoom = _bodies.Length;
         Buffers.ShrinkIfIdle(ref _bodies, _bodyCount, ref _bodyRoom, InitialBodyCapacity);
+        if (_bodies.Length < bodyRoom)
+        {
+            TrimSleepBuffers(_bodies.Length); // sized by the bodies, they follow the body array
+        }
+
         Buffers.ShrinkIfIdle(ref _awake, _awakeCount, ref _awakeRoom, InitialBodyCapacity);
         Collisions.ShrinkIfIdle();
         _impacts.ShrinkIfIdle(_bodyCount, Collisions.Count);

@@ -455,6 +455,24 @@ public sealed partial class World
         Buffers.EnsureCapacity(ref _sleepers, bodies);
     }
 
+    /// <summary>
+    /// Gives back the room of the sleeping arrays beyond <paramref name="bodies"/> bodies (at least the world's):
+    /// on <see cref="TrimExcess"/>, and when the body array has shrunk on its own. The island arrays are refilled at
+    /// every search for islands, the sleepers' list at every rebuild of their grid; only the record of the sleeping
+    /// islands is kept.
+    /// </summary>
+    private void TrimSleepBuffers(int bodies)
+    {
+        _islands.TrimExcess(bodies);
+        Buffers.Shrink(ref _islandSleepTime, bodies);
+        Buffers.Shrink(ref _islandHeld, bodies);
+        Buffers.Shrink(ref _islandMoved, bodies);
+        Buffers.Shrink(ref _sleepingIslandOf, bodies);
+        Buffers.ShrinkTo(ref _sleepers, _sleepingCount, 0);
+        Buffers.ShrinkTo(ref _pendingWakes, Math.Max(_pendingWakeCount, 4), _pendingWakeCount);
+        _sleepGrid.TrimExcess(); // rebuilt from the sleeping bodies at its next use
+    }
+
     private void AddAwake(RigidBody body)
     {
         Buffers.EnsureCapacity(ref _awake, _awakeCount + 1);

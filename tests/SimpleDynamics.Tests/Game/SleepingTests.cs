@@ -124,6 +124,41 @@ public class SleepingTests
         Assert.True(ball.Position.Y > left[9].Position.Y, "the ball landed on the heap, not through it");
     }
 
+    [Fact]
+    public void TrimExcess_keeps_each_sleeping_island_whole_after_a_crowd_has_come_and_gone()
+    {
+        World world = TwoHeaps(out RigidBody[] left, out RigidBody[] right);
+        StepUntilAsleep(world);
+        // A crowd of 300 far away grows the sleeping arrays with the world; removed and trimmed, they shrink back.
+        var crowd = new RigidBody[300];
+        for (int i = 0; i < crowd.Length; i++)
+        {
+            crowd[i] = world.Add(new RigidBody(1f, 0.1f, new Vector3(100 + 0.3f * i, 50, 0)));
+        }
+
+        world.Step(Dt);
+        foreach (RigidBody body in crowd)
+        {
+            world.Remove(body);
+        }
+
+        world.TrimExcess();
+        Assert.Equal(20, world.SleepingBodyCount);
+
+        world.Add(new RigidBody(1f, Radius, left[9].Position + new Vector3(0, 3, 0), Inertia.Disc(1f, Radius)));
+        bool leftWoke = false;
+        for (int i = 0; i < 120; i++)
+        {
+            world.Step(Dt);
+            leftWoke |= left.All(b => b.IsAwake);
+            Assert.All(right, b => Assert.False(b.IsAwake));
+        }
+
+        Assert.True(leftWoke, "the heap the ball fell on woke, all of it");
+        right[0].Wake();
+        Assert.All(right, b => Assert.True(b.IsAwake));
+    }
+
     public static TheoryData<string> WakeTriggers => new()
     {
         "ApplyImpulse", "ApplyForce", "ApplyForceAtPoint", "ApplyTorque", "Position", "LinearVelocity",

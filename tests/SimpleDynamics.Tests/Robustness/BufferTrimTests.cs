@@ -149,7 +149,20 @@ public class BufferTrimTests
         return after - before;
     }
 
-    private static long Heap() => GC.GetTotalMemory(forceFullCollection: true);
+    /// <summary>
+    /// The live heap, as the least of three full-collection readings: what another thread (the test runner's
+    /// message bus) holds for a moment can only add to a reading, and the least one is the closest to what stays.
+    /// </summary>
+    private static long Heap()
+    {
+        long least = long.MaxValue;
+        for (int i = 0; i < 3; i++)
+        {
+            least = Math.Min(least, GC.GetTotalMemory(forceFullCollection: true));
+        }
+
+        return least;
+    }
 
     private static void RemoveAll(World world)
     {
