@@ -42,16 +42,38 @@ public sealed partial class SequentialImpulseSolver
     /// </summary>
     private void Sweeps(int count)
     {
+        // Only the last fixed sweep's convergence decides whether extra ones follow; the others need no measuring.
         bool converged = false;
         for (int iteration = 0; iteration < _velocityIterations; iteration++)
         {
-            converged = Sweep(count);
+            if (iteration < _velocityIterations - 1 || _extraSweeps == 0)
+            {
+                SweepUnmeasured(count);
+            }
+            else
+            {
+                converged = Sweep(count);
+            }
         }
 
         // Further sweeps only while the last one has not converged (a settled pile needs none).
         for (int extra = 0; extra < _extraSweeps && !converged; extra++)
         {
             converged = Sweep(count);
+        }
+    }
+
+    /// <summary>One Gauss–Seidel sweep over every contact, bottom-up, when nothing asks whether it converged.</summary>
+    private void SweepUnmeasured(int count)
+    {
+        SweepsThisStep++;
+        for (int k = 0; k < count; k++)
+        {
+            ref ContactConstraint c = ref _constraints[k];
+            if (c.Active)
+            {
+                SolveContact(ref c);
+            }
         }
     }
 
@@ -102,45 +124,51 @@ public sealed partial class SequentialImpulseSolver
     /// <remarks>
     /// The relative velocity at the contact, v_A + ω_A × r_A − v_B − ω_B × r_B (eq. 13–14), with r_A = −ρ_A n and
     /// r_B = ρ_B n (see MeasureConstraints) is Δv − W × n for Δv = v_A − v_B and W = ρ_A ω_A + ρ_B ω_B; along the
-    /// tangents (t₂ = n × t₁) that is Δv·t₁ − W·t₂ and Δv·t₂ + W·t₁, and along n just Δv·n.
+    /// tangents (t₂ = n × t₁) that is Δv·t₁ − W·t₂ and Δv·t₂ + W·t₁, and along n just Δv·n. Friction acts along the
+    /// tangents, perpendicular to n, so it leaves Δv·n as it was: the normal impulse is found from the same
+    /// velocities, and both are applied at once.
     /// </remarks>
     private void SolveContact(ref ContactConstraint c)
     {
         ref VelocityState a = ref _bodies[c.A];
         ref VelocityState b = ref _bodies[c.B];
+        Vector3 linear = a.Linear - b.Linear;
+        float oldNormal = c.NormalImpulse;
+        float normal = c.NormalImpulse = MathF.Max(oldNormal - c.NormalMass * Vector3.Dot(linear, c.Normal), 0f);
+        float change1 = 0, change2 = 0;
 
         // A contact that pushes nothing has no friction either (|P_t| ≤ μ P_n = 0): skip the work.
-        if (c.NormalImpulse > 0 || c.FrictionImpulse1 != 0 || c.FrictionImpulse2 != 0)
+        if (oldNormal > 0 || c.FrictionImpulse1 != 0 || c.FrictionImpulse2 != 0)
         {
-            Vector3 linear = a.Linear - b.Linear;
             Vector3 spin = c.RhoA * a.Angular + c.RhoB * b.Angular;
+            float limit = c.Friction * oldNormal;
             float old1 = c.FrictionImpulse1, old2 = c.FrictionImpulse2;
             if (_planar)
             {
                 // One tangent (t₂ = −ẑ), so the disc |P_t| ≤ μ P_n is the interval [−μ P_n, μ P_n].
-                float limit = c.Friction * c.NormalImpulse;
                 float sliding = Vector3.Dot(linear, c.Tangent1) + spin.Z;
                 c.FrictionImpulse1 = Math.Clamp(old1 - c.TangentMass1 * sliding, -limit, limit);
-            }
-            else
-            {
-                c.FrictionImpulse1 -= c.TangentMass1 * (Vector3.Dot(linear, c.Tangent1) - Vector3.Dot(spin, c.Tangent2));
-                c.FrictionImpulse2 -= c.TangentMass2 * (Vector3.Dot(linear, c.Tangent2) + Vector3.Dot(spin, c.Tangent1));
-                ClampFriction(ref c);
+                change1 = c.FrictionImpulse1 - old1;
+                Vector3 planarImpulse = (normal - oldNormal) * c.Normal + change1 * c.Tangent1;
+                a.Linear += planarImpulse * a.InverseMass;
+                a.Angular += change1 * c.SpinA1;
+                b.Linear -= planarImpulse * b.InverseMass;
+                b.Angular -= change1 * c.SpinB1;
+                return;
             }
 
-            Apply(ref c, 0f, c.FrictionImpulse1 - old1, c.FrictionImpulse2 - old2);
+            c.FrictionImpulse1 -= c.TangentMass1 * (Vector3.Dot(linear, c.Tangent1) - Vector3.Dot(spin, c.Tangent2));
+            c.FrictionImpulse2 -= c.TangentMass2 * (Vector3.Dot(linear, c.Tangent2) + Vector3.Dot(spin, c.Tangent1));
+            ClampFriction(ref c, limit);
+            change1 = c.FrictionImpulse1 - old1;
+            change2 = c.FrictionImpulse2 - old2;
         }
-
-        float normalVelocity = Vector3.Dot(a.Linear - b.Linear, c.Normal);
-        float oldNormal = c.NormalImpulse;
-        c.NormalImpulse = MathF.Max(oldNormal - c.NormalMass * normalVelocity, 0f);
-        if (c.NormalImpulse != oldNormal)
+        else if (normal == oldNormal)
         {
-            Vector3 impulse = (c.NormalImpulse - oldNormal) * c.Normal; // along n: no spin (r × n = 0)
-            a.Linear += impulse * a.InverseMass;
-            b.Linear -= impulse * b.InverseMass;
+            return;
         }
+
+        Apply(ref c, normal - oldNormal, change1, change2);
     }
 
     /// <summary>
@@ -217,9 +245,11 @@ public sealed partial class SequentialImpulseSolver
         return changed;
     }
 
-    private static void ClampFriction(ref ContactConstraint c)
+    private static void ClampFriction(ref ContactConstraint c) => ClampFriction(ref c, c.Friction * c.NormalImpulse);
+
+    /// <summary>Scales the friction impulse back onto the disc |P_t| ≤ <paramref name="limit"/> (Coulomb) if it lies outside.</summary>
+    private static void ClampFriction(ref ContactConstraint c, float limit)
     {
-        float limit = c.Friction * c.NormalImpulse;
         float squared = c.FrictionImpulse1 * c.FrictionImpulse1 + c.FrictionImpulse2 * c.FrictionImpulse2;
         if (squared > limit * limit)
         {

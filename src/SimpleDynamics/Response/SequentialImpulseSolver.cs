@@ -272,7 +272,7 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
         Sweeps(contacts.Length);
         if (step.Gravity != Vector3.Zero && PropagateShock(contacts.Length))
         {
-            Sweep(contacts.Length); // the contacts the shock pass turned into approaches (see PropagateShock)
+            SweepUnmeasured(contacts.Length); // the contacts the shock pass turned into approaches (see PropagateShock)
         }
 
         AddToStepTotals(contacts.Length);
