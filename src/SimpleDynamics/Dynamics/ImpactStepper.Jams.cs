@@ -21,7 +21,26 @@ internal sealed partial class ImpactStepper
     private const int JamSweeps = 8;
 
     private bool _jammed;
-    private bool[] _inJam = new bool[InitialContacts]; // per contact: an end is jammed (while settling)
+    private JamState[] _inJam = new JamState[InitialContacts]; // per contact, while settling
+
+    /// <summary>
+    /// Where a contact stands in the settling of a jam. The bodies do not move while it is settled (only their
+    /// velocities change), so a contact is measured once, when it first joins, and not again at every sweep.
+    /// </summary>
+    private enum JamState : byte
+    {
+        /// <summary>Neither end is jammed.</summary>
+        Out,
+
+        /// <summary>An end is jammed; not measured yet.</summary>
+        Joined,
+
+        /// <summary>Measured: touching, so swept.</summary>
+        Touching,
+
+        /// <summary>Measured: apart, so not part of the jam.</summary>
+        Apart,
+    }
 
     /// <summary>
     /// Whether an impact only stops a creep: its approach would sink the pair by less than
@@ -71,17 +90,23 @@ internal sealed partial class ImpactStepper
             bool pushed = false;
             for (int k = 0; k < _contactCount; k++)
             {
-                if (!_inJam[k])
+                JamState state = _inJam[k];
+                if (state is JamState.Out or JamState.Apart)
                 {
                     continue;
                 }
 
                 Ends(k, out int a, out int b);
                 ref Contact contact = ref _contacts[k];
-                Measure(ref contact, planes);
-                if (contact.Penetration < -HeldDepthTolerance * SmallerRadius(a, b))
+                if (state == JamState.Joined)
                 {
-                    continue; // apart: not part of the jam
+                    Measure(ref contact, planes);
+                    bool apart = contact.Penetration < -HeldDepthTolerance * SmallerRadius(a, b);
+                    _inJam[k] = apart ? JamState.Apart : JamState.Touching;
+                    if (apart)
+                    {
+                        continue; // not part of the jam
+                    }
                 }
 
                 if (StopApproach(ref contact, a, b))
@@ -119,7 +144,11 @@ internal sealed partial class ImpactStepper
     {
         for (int e = _head[i]; e >= 0; e = _next[e])
         {
-            _inJam[e >> 1] = true;
+            ref JamState state = ref _inJam[e >> 1];
+            if (state == JamState.Out)
+            {
+                state = JamState.Joined;
+            }
         }
     }
 }

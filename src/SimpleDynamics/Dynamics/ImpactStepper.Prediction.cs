@@ -123,24 +123,24 @@ internal sealed partial class ImpactStepper
         double dx = d.X, dy = d.Y, dz = d.Z;
         double vx = relative.X, vy = relative.Y, vz = relative.Z;
         double dv = dx * vx + dy * vy + dz * vz;
-        double distance = Math.Sqrt(dx * dx + dy * dy + dz * dz);
-        if (dv >= -ClosingTolerance * distance * (_motion[a].Chord.Length() + _motion[b].Chord.Length()))
+        double dd = dx * dx + dy * dy + dz * dz;
+        double reach = (double)_motion[a].Radius + _motion[b].Radius - limit;
+        double excess = dd - reach * reach;
+        double vv = vx * vx + vy * vy + vz * vz;
+        double discriminant = dv * dv - vv * excess;
+        if (excess > 0 && discriminant < 0)
+        {
+            return double.PositiveInfinity; // passing by (tested first: it needs no square root)
+        }
+
+        if (dv >= -ClosingTolerance * Math.Sqrt(dd) * (_motion[a].Chord.Length() + _motion[b].Chord.Length()))
         {
             return double.PositiveInfinity; // not approaching, or only by the rounding of a pair just answered
         }
 
-        double reach = (double)_motion[a].Radius + _motion[b].Radius - limit;
-        double excess = dx * dx + dy * dy + dz * dz - reach * reach;
         if (excess <= 0)
         {
             return t0; // at the limit already, and approaching
-        }
-
-        double vv = vx * vx + vy * vy + vz * vz;
-        double discriminant = dv * dv - vv * excess;
-        if (discriminant < 0)
-        {
-            return double.PositiveInfinity; // passing by
         }
 
         return t0 + excess / (-dv + Math.Sqrt(discriminant)); // the smaller root, written to avoid cancellation
