@@ -194,7 +194,8 @@ public sealed partial class World
             }
         }
 
-        if (anyReady)
+        // Without gravity no island rests on anything (see Touches), so none can sleep: the search would find nothing.
+        if (anyReady && Gravity != Vector3.Zero)
         {
             FindIslandsAndSleep(dt);
         }
