@@ -77,7 +77,7 @@ internal sealed partial class ImpactStepper
                 return;
             }
 
-            time = PairImpactTime(a, b, t0, d, relative, LimitOf(k));
+            time = PairImpactTime(k, a, b, t0, d, relative);
         }
 
         if (time <= _h)
@@ -115,32 +115,34 @@ internal sealed partial class ImpactStepper
 
     /// <summary>
     /// When the centres' distance, moving along their chords from <paramref name="d"/> at <paramref name="t0"/>, first
-    /// reaches r_A + r_B − limit while they approach; +∞ if it does not. Solves |d + v s|² = D² for the smaller root
-    /// s ≥ 0 in double precision.
+    /// reaches r_A + r_B − limit (contact <paramref name="k"/>'s depth limit) while they approach; +∞ if it does not.
+    /// Solves |d + v s|² = D² for the smaller root s ≥ 0 in double precision.
     /// </summary>
-    private double PairImpactTime(int a, int b, double t0, Vector3 d, Vector3 relative, float limit)
+    private double PairImpactTime(int k, int a, int b, double t0, Vector3 d, Vector3 relative)
     {
         double dx = d.X, dy = d.Y, dz = d.Z;
         double vx = relative.X, vy = relative.Y, vz = relative.Z;
         double dv = dx * vx + dy * vy + dz * vz;
         double dd = dx * dx + dy * dy + dz * dz;
-        double reach = (double)_motion[a].Radius + _motion[b].Radius - limit;
-        double excess = dd - reach * reach;
-        double vv = vx * vx + vy * vy + vz * vz;
-        double discriminant = dv * dv - vv * excess;
-        if (excess > 0 && discriminant < 0)
-        {
-            return double.PositiveInfinity; // passing by (tested first: it needs no square root)
-        }
-
         if (dv >= -ClosingTolerance * Math.Sqrt(dd) * (_motion[a].Chord.Length() + _motion[b].Chord.Length()))
         {
-            return double.PositiveInfinity; // not approaching, or only by the rounding of a pair just answered
+            // Not approaching, or only by the rounding of a pair just answered: most contacts of a resting pile,
+            // rejected before their depth limit is worked out.
+            return double.PositiveInfinity;
         }
 
+        double reach = (double)_motion[a].Radius + _motion[b].Radius - LimitOf(k);
+        double excess = dd - reach * reach;
         if (excess <= 0)
         {
             return t0; // at the limit already, and approaching
+        }
+
+        double vv = vx * vx + vy * vy + vz * vz;
+        double discriminant = dv * dv - vv * excess;
+        if (discriminant < 0)
+        {
+            return double.PositiveInfinity; // passing by
         }
 
         return t0 + excess / (-dv + Math.Sqrt(discriminant)); // the smaller root, written to avoid cancellation
