@@ -22,6 +22,9 @@ internal struct ContactConstraint
     /// <summary>Whether A is the upper body along gravity (B lies below it, or is the ground), for shock propagation.</summary>
     public bool AIsUpper;
 
+    /// <summary>Whether the normal lies within about 45° of vertical (|n·ĝ| &gt; 0.7): the contact carries weight.</summary>
+    public bool CarriesWeight;
+
     // Accumulated impulses of the substep.
     public float NormalImpulse, FrictionImpulse1, FrictionImpulse2;
 

@@ -31,15 +31,13 @@ public sealed partial class SequentialImpulseSolver
         // A last sweep removes the whole depth beyond the slop: under gravity, contacts that carry weight (normal
         // within about 45° of vertical) propagate the shock bottom-up; every other contact, and every contact without
         // gravity, is corrected in full, split by inverse mass.
-        float gravityLength = _gravity.Length();
         for (int k = 0; k < count; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
-            bool carriesWeight = gravityLength > 0 && MathF.Abs(Vector3.Dot(c.Normal, _gravity)) > 0.7f * gravityLength;
-            CorrectPosition(ref c, shock: carriesWeight, factor: 1f);
+            CorrectPosition(ref c, shock: c.CarriesWeight, factor: 1f);
         }
 
-        if (gravityLength == 0)
+        if (_gravity == Vector3.Zero)
         {
             PropagateFromAnchors(count, bodies.Length + 1); // see SequentialImpulseSolver.Anchoring.cs
         }

@@ -219,6 +219,7 @@ public sealed partial class SequentialImpulseSolver
     /// </summary>
     private void MeasureConstraints(ReadOnlySpan<Contact> contacts)
     {
+        float weight = 0.7f * _gravity.Length(); // see ContactConstraint.CarriesWeight (never, without gravity)
         for (int k = 0; k < contacts.Length; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
@@ -244,6 +245,7 @@ public sealed partial class SequentialImpulseSolver
             bool pushed = c.NormalImpulse > 0 || contacts[k].NormalImpulse > 0; // in the last substep, or by an impact of this step
             c.Active = (penetration >= 0 || (penetration >= -_slop && pushed)) && normalVelocity >= -_restitutionThreshold;
             c.AIsUpper = c.B == 0 || Vector3.Dot(positionA - _positions[c.B], _gravity) <= 0;
+            c.CarriesWeight = MathF.Abs(Vector3.Dot(c.Normal, _gravity)) > weight;
             if (!c.Active)
             {
                 c.NormalImpulse = 0;

@@ -206,13 +206,12 @@ public sealed partial class SequentialImpulseSolver
     /// </remarks>
     private bool PropagateShock(int count)
     {
-        float weight = 0.7f * _gravity.Length();
         float tolerance = _convergenceTolerance * _gravity.Length() * _step!.SubstepLength;
         bool changed = false;
         for (int k = 0; k < count; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
-            if (!c.Active || MathF.Abs(Vector3.Dot(c.Normal, _gravity)) <= weight)
+            if (!c.Active || !c.CarriesWeight)
             {
                 continue;
             }
