@@ -20,7 +20,8 @@ namespace SimpleDynamics.Collision;
 /// <para><b>Exactly once.</b> A pair is reported only in the cell that holds the minimum corner of the
 /// intersection of the two bounding boxes, the one cell both bodies are certain to share; so no pair is found
 /// twice and no set of seen pairs is needed.</para>
-/// <para><b>Cell size</b> is twice the mean radius, chosen anew every step. A body that would cover more than
+/// <para><b>Cell size</b> is twice the mean radius, chosen anew every step; along an axis the whole world spans no
+/// more than two cells of, there is one layer (a 2-D world in z = 0 would otherwise straddle two). A body that would cover more than
 /// <see cref="MaxCellsPerBody"/> cells (a huge ground disc, say) is kept out of the grid and tested against every
 /// body instead.</para>
 /// <para>All working arrays are kept and reused: once warm, a step allocates nothing. They shrink when asked
@@ -45,6 +46,9 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
     private int _oversizedCount;
     private ShrinkPolicy _boundsRoom, _entryRoom, _bucketRoom, _oversizedRoom;
 
+    /// <summary>The (cell, body) entries of the grid in the last call with two bodies or more, for tests.</summary>
+    internal int LastEntryCount { get; private set; }
+
     /// <inheritdoc />
     public void FindContacts(ReadOnlySpan<RigidBody> bodies, CollisionData collisions, float margin = 0f, float lookahead = 0f)
     {
@@ -59,8 +63,8 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
             return;
         }
 
-        float inverseCellSize = GatherBounds(bodies, 0.5f * margin, lookahead);
-        int entryCount = CountEntries(n, inverseCellSize);
+        Vector3 inverseCellSize = GatherBounds(bodies, 0.5f * margin, lookahead);
+        int entryCount = LastEntryCount = CountEntries(n, inverseCellSize);
         int bucketMask = PrepareBuckets(entryCount);
         FillBuckets(n, bucketMask);
         FindPairsInBuckets(bodies, bucketMask, collisions, inverseCellSize, margin, lookahead);
@@ -94,12 +98,17 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
 
     /// <summary>
     /// Copies centres and radii, each radius grown by half the margin and by the distance the body travels in
-    /// the lookahead, so that every pair the exact test may accept shares a cell.
+    /// the lookahead, so that every pair the exact test may accept shares a cell. Returns the inverse cell size
+    /// along each axis: 0 along an axis the bodies' boxes span no more than two cells of (all of them share one
+    /// layer of cells there), so that a flat world, a 2-D one in the plane z = 0 above all, is not entered
+    /// twice, once in each of two layers that its boxes straddle.
     /// </summary>
-    private float GatherBounds(ReadOnlySpan<RigidBody> bodies, float halfMargin, float lookahead)
+    private Vector3 GatherBounds(ReadOnlySpan<RigidBody> bodies, float halfMargin, float lookahead)
     {
         Buffers.EnsureCapacity(ref _bounds, bodies.Length);
         double radiusSum = 0;
+        var low = new Vector3(float.PositiveInfinity);
+        var high = new Vector3(float.NegativeInfinity);
         for (int i = 0; i < bodies.Length; i++)
         {
             RigidBody body = bodies[i];
@@ -109,14 +118,21 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
             reach += 1e-6f * (MathF.Abs(c.X) + MathF.Abs(c.Y) + MathF.Abs(c.Z) + reach);
             _bounds[i] = new Bounds { Centre = c, Radius = reach };
             radiusSum += reach;
+            low = Vector3.Min(low, c - new Vector3(reach));
+            high = Vector3.Max(high, c + new Vector3(reach));
         }
 
         float cellSize = (float)(2 * radiusSum / bodies.Length);
-        return 1f / cellSize;
+        Vector3 extent = high - low;
+        float inverse = 1f / cellSize;
+        return new Vector3(
+            extent.X <= 2 * cellSize ? 0f : inverse,
+            extent.Y <= 2 * cellSize ? 0f : inverse,
+            extent.Z <= 2 * cellSize ? 0f : inverse);
     }
 
     /// <summary>Computes each body's cell range; counts grid entries and sets oversized bodies aside.</summary>
-    private int CountEntries(int n, float inverseCellSize)
+    private int CountEntries(int n, Vector3 inverseCellSize)
     {
         _oversizedCount = 0;
         int entries = 0;
@@ -124,8 +140,8 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
         {
             ref Bounds b = ref _bounds[i];
             Vector3 min = b.Centre - new Vector3(b.Radius), max = b.Centre + new Vector3(b.Radius);
-            b.Min = new Cell(CellOf(min.X, inverseCellSize), CellOf(min.Y, inverseCellSize), CellOf(min.Z, inverseCellSize));
-            b.Max = new Cell(CellOf(max.X, inverseCellSize), CellOf(max.Y, inverseCellSize), CellOf(max.Z, inverseCellSize));
+            b.Min = CellOf(min, inverseCellSize);
+            b.Max = CellOf(max, inverseCellSize);
             long cells = (long)(b.Max.X - b.Min.X + 1) * (b.Max.Y - b.Min.Y + 1) * (b.Max.Z - b.Min.Z + 1);
             if (cells > MaxCellsPerBody)
             {
@@ -209,7 +225,7 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
         _bucketStart[0] = 0;
     }
 
-    private void FindPairsInBuckets(ReadOnlySpan<RigidBody> bodies, int bucketMask, CollisionData collisions, float inverseCellSize, float margin, float lookahead)
+    private void FindPairsInBuckets(ReadOnlySpan<RigidBody> bodies, int bucketMask, CollisionData collisions, Vector3 inverseCellSize, float margin, float lookahead)
     {
         for (int k = 0; k <= bucketMask; k++)
         {
@@ -269,13 +285,15 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
     }
 
     /// <summary>The cell of the minimum corner of the intersection of two bounding boxes.</summary>
-    private Cell OwnerCell(int i, int j, float inverseCellSize)
+    private Cell OwnerCell(int i, int j, Vector3 inverseCellSize)
     {
         Vector3 cornerI = _bounds[i].Centre - new Vector3(_bounds[i].Radius);
         Vector3 cornerJ = _bounds[j].Centre - new Vector3(_bounds[j].Radius);
-        Vector3 corner = Vector3.Max(cornerI, cornerJ);
-        return new Cell(CellOf(corner.X, inverseCellSize), CellOf(corner.Y, inverseCellSize), CellOf(corner.Z, inverseCellSize));
+        return CellOf(Vector3.Max(cornerI, cornerJ), inverseCellSize);
     }
+
+    private static Cell CellOf(Vector3 point, Vector3 inverseCellSize) =>
+        new(CellOf(point.X, inverseCellSize.X), CellOf(point.Y, inverseCellSize.Y), CellOf(point.Z, inverseCellSize.Z));
 
     private static int CellOf(float coordinate, float inverseCellSize) =>
         (int)Math.Clamp(MathF.Floor(coordinate * inverseCellSize), -CellLimit, CellLimit);

@@ -33,6 +33,28 @@ public class DetectionLaws
         Check(new SpatialHashDetector(), seed: 402); // one instance for every scene: its reused buffers are tested too
 
     /// <summary>
+    /// The same scenes flattened onto the plane z = 0 and onto the line y = z = 0: the grid then keeps one layer of
+    /// cells along each flat axis (see <see cref="SpatialHashDetector"/>), and must still find exactly the pairs.
+    /// </summary>
+    [Fact]
+    public void SpatialHashDetector_finds_exactly_the_overlapping_pairs_in_flat_worlds()
+    {
+        var detector = new SpatialHashDetector();
+        Check(detector, seed: 403, flatten: p => new System.Numerics.Vector3(p.X, p.Y, 0));
+        Check(detector, seed: 404, flatten: p => new System.Numerics.Vector3(p.X, 0, 0));
+    }
+
+    [Fact]
+    public void A_2D_pit_is_entered_in_one_layer_of_cells()
+    {
+        RigidBody[] bodies = SimpleDynamics.Scenes.BallPit(300, planar: true).Bodies.ToArray();
+        var detector = new SpatialHashDetector();
+        detector.FindContacts(bodies, new CollisionData());
+        // A box two cells wide at most covers 2 × 2 cells in the plane; two layers along z would double that.
+        Assert.InRange(detector.LastEntryCount, bodies.Length, 4 * bodies.Length);
+    }
+
+    /// <summary>
     /// Bodies a million metres out lie beyond the spatial hash's clamped cell range (2^20 cells of 0.7 m): they
     /// share edge cells, and each overlapping pair must still be found exactly once, and nothing else.
     /// </summary>
@@ -64,8 +86,8 @@ public class DetectionLaws
         }
     }
 
-    private static void Check(ICollisionDetector detector, ulong seed, [System.Runtime.CompilerServices.CallerMemberName] string name = "") =>
-        PropertyCheck.Run(Scenes, scene =>
+    private static void Check(ICollisionDetector detector, ulong seed, Func<System.Numerics.Vector3, System.Numerics.Vector3>? flatten = null, [System.Runtime.CompilerServices.CallerMemberName] string name = "") =>
+        PropertyCheck.Run(Flattened(flatten), scene =>
         {
             RigidBody[] bodies = scene.Bodies.Select(s => s.Build()).ToArray();
             var index = new Dictionary<RigidBody, int>(ReferenceEqualityComparer.Instance);
@@ -92,6 +114,13 @@ public class DetectionLaws
             Law.Holds(missing.Count == 0 && extra.Count == 0,
                 $"missing pairs [{string.Join(", ", missing)}], extra pairs [{string.Join(", ", extra)}]");
         }, seed, maxTest: 400, name: name);
+
+    private static FsCheck.Gen<DetectionScene> Flattened(Func<System.Numerics.Vector3, System.Numerics.Vector3>? flatten) =>
+        flatten is null
+            ? Scenes
+            : Generators.DetectionScene
+                .Select(s => new DetectionScene(s.Bodies.Select(b => b with { Position = flatten(b.Position) }).ToArray()))
+                .Where(NoBorderlinePair);
 
     /// <summary>Every pair i &lt; j with at least one dynamic body whose centres are closer than r_i + r_j.</summary>
     private static HashSet<(int, int)> Oracle(RigidBody[] bodies)
