@@ -31,13 +31,17 @@ public sealed partial class SequentialImpulseSolver
         // A last sweep removes the whole depth beyond the slop: under gravity, contacts that carry weight (normal
         // within about 45° of vertical) propagate the shock bottom-up; every other contact, and every contact without
         // gravity, is corrected in full, split by inverse mass.
+        // A settled pile corrects next to nothing here; a jam against a wall corrects a sideways contact by much more,
+        // and only then can the walk from what cannot move have anything to do.
+        bool sidewaysCorrected = false;
         for (int k = 0; k < count; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
-            CorrectPosition(ref c, shock: c.CarriesWeight, factor: 1f);
+            float correction = CorrectPosition(ref c, shock: c.CarriesWeight, factor: 1f);
+            sidewaysCorrected |= !c.CarriesWeight && correction > 0.01f * _slop;
         }
 
-        if (_gravity == Vector3.Zero)
+        if (sidewaysCorrected)
         {
             PropagateFromAnchors(count, bodies.Length + 1); // see SequentialImpulseSolver.Anchoring.cs
         }
@@ -55,16 +59,17 @@ public sealed partial class SequentialImpulseSolver
     /// Listing 2 as a Gauss–Seidel position sweep: measure the contact at the current positions and push the
     /// bodies apart along the normal, split by inverse mass, by a bounded share of the depth beyond the slop. With
     /// <paramref name="shock"/> (the last, bottom-up sweep under gravity) the whole depth beyond the slop is removed
-    /// by moving the upper body alone. <paramref name="factor"/> is the share of the excess depth removed.
+    /// by moving the upper body alone. <paramref name="factor"/> is the share of the excess depth removed. Returns the
+    /// depth removed (0 when none).
     /// </summary>
-    private void CorrectPosition(ref ContactConstraint c, bool shock, float factor)
+    private float CorrectPosition(ref ContactConstraint c, bool shock, float factor)
     {
         float inverseMassA = _bodies[c.A].InverseMass, inverseMassB = _bodies[c.B].InverseMass;
         if (shock)
         {
             if (c.AIsUpper ? inverseMassA == 0 : inverseMassB == 0)
             {
-                return;
+                return 0;
             }
 
             inverseMassA = c.AIsUpper ? 1f : 0f;
@@ -74,18 +79,19 @@ public sealed partial class SequentialImpulseSolver
         float inverseMassSum = inverseMassA + inverseMassB;
         if (inverseMassSum == 0)
         {
-            return;
+            return 0;
         }
 
         float penetration = Depth(ref c, out Vector3 normal);
         float correction = shock ? penetration - _slop : MathF.Min(factor * (penetration - _slop), _maxCorrection);
         if (correction <= 0)
         {
-            return;
+            return 0;
         }
 
         float share = correction / inverseMassSum;
         _positions[c.A] += normal * (share * inverseMassA);
         _positions[c.B] -= normal * (share * inverseMassB);
+        return correction;
     }
 }
