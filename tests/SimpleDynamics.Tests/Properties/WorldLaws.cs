@@ -143,7 +143,7 @@ public class WorldLaws
                     before[i] = bodies[i].Position;
                 }
             }
-        }, seed: 801, maxTest: 150);
+        }, seed: 801, maxTest: 2000);
 
     /// <summary>
     /// How much rounding the float32 state can add to the angular momentum about <paramref name="origin"/> in one
