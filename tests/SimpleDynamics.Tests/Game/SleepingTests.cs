@@ -70,6 +70,25 @@ public class SleepingTests
         Assert.Fail($"{world.SleepingBodyCount} of {dynamic} dynamic bodies asleep after {seconds} s");
     }
 
+    /// <summary>
+    /// Drops a ball onto the sleeping <paramref name="heap"/> and steps 2 s: the whole heap must wake, and the
+    /// <paramref name="far"/> one must sleep on throughout. Returns the ball.
+    /// </summary>
+    private static RigidBody DropBallAndWatch(World world, RigidBody[] heap, RigidBody[] far)
+    {
+        RigidBody ball = world.Add(new RigidBody(1f, Radius, heap[9].Position + new Vector3(0, 3, 0), Inertia.Disc(1f, Radius)));
+        bool heapWoke = false;
+        for (int i = 0; i < 120; i++)
+        {
+            world.Step(Dt);
+            heapWoke |= heap.All(b => b.IsAwake);
+            Assert.All(far, b => Assert.False(b.IsAwake));
+        }
+
+        Assert.True(heapWoke, "the heap the ball fell on woke, all of it");
+        return ball;
+    }
+
     [Fact]
     public void Sleeping_is_on_by_default_with_the_thresholds_of_Box2D()
     {
@@ -109,17 +128,7 @@ public class SleepingTests
         World world = TwoHeaps(out RigidBody[] left, out RigidBody[] right);
         StepUntilAsleep(world);
         Vector3[] farPositions = right.Select(b => b.Position).ToArray();
-        RigidBody ball = world.Add(new RigidBody(1f, Radius, left[9].Position + new Vector3(0, 3, 0), Inertia.Disc(1f, Radius)));
-
-        bool leftWoke = false;
-        for (int i = 0; i < 120; i++)
-        {
-            world.Step(Dt);
-            leftWoke |= left.All(b => b.IsAwake);
-            Assert.All(right, b => Assert.False(b.IsAwake));
-        }
-
-        Assert.True(leftWoke, "the heap the ball fell on woke, all of it");
+        RigidBody ball = DropBallAndWatch(world, left, right);
         Assert.Equal(farPositions, right.Select(b => b.Position).ToArray());
         Assert.True(ball.Position.Y > left[9].Position.Y, "the ball landed on the heap, not through it");
     }
@@ -145,16 +154,7 @@ public class SleepingTests
         world.TrimExcess();
         Assert.Equal(20, world.SleepingBodyCount);
 
-        world.Add(new RigidBody(1f, Radius, left[9].Position + new Vector3(0, 3, 0), Inertia.Disc(1f, Radius)));
-        bool leftWoke = false;
-        for (int i = 0; i < 120; i++)
-        {
-            world.Step(Dt);
-            leftWoke |= left.All(b => b.IsAwake);
-            Assert.All(right, b => Assert.False(b.IsAwake));
-        }
-
-        Assert.True(leftWoke, "the heap the ball fell on woke, all of it");
+        DropBallAndWatch(world, left, right);
         right[0].Wake();
         Assert.All(right, b => Assert.True(b.IsAwake));
     }

@@ -37,24 +37,13 @@ public class AnchoringTests
             (596.64374f, 0.38163942f, new(3.1490219f, 1.0845429f, 0), new(-43.764366f, 42.30773f, 0), 0.27231076f),
             (0.102169864f, 0.15122543f, new(2.5215971f, 3.3907955f, 0), new(-31.851658f, -16.856152f, 0), -3.176812f),
         };
-        RigidBody[] bodies = discs.Select(d => world.Add(new RigidBody(d.Mass, d.Radius, d.Position, Inertia.Disc(d.Mass, d.Radius))
-        {
-            LinearVelocity = d.Velocity,
-            AngularVelocity = new Vector3(0, 0, d.Spin),
-        })).ToArray();
+        RigidBody[] bodies = AddDiscs(world, discs);
 
         float deepest = 0;
         for (int step = 0; step < 40; step++)
         {
             world.Step(1f / 240f);
-            for (int i = 0; i < bodies.Length; i++)
-            {
-                for (int j = i + 1; j < bodies.Length; j++)
-                {
-                    float depth = bodies[i].Radius + bodies[j].Radius - Vector3.Distance(bodies[i].Position, bodies[j].Position);
-                    deepest = MathF.Max(deepest, depth);
-                }
-            }
+            deepest = MathF.Max(deepest, DeepestPair(bodies));
         }
 
         _output.WriteLine($"deepest pair over 40 steps: {deepest} m (slop {solver.Slop} m)");
@@ -82,11 +71,7 @@ public class AnchoringTests
             (208.09306f, 0.16100347f, new(1.1740032f, 0.3778564f, 0), new(2.6507401f, -2.7411118f, 0), -2.2619486f),
             (1.5375831f, 0.10187172f, new(3.4224577f, 1.8855821f, 0), new(-2.5548456f, 2.0908558f, 0), -3.595594f),
         };
-        RigidBody[] bodies = discs.Select(d => world.Add(new RigidBody(d.Mass, d.Radius, d.Position, Inertia.Disc(d.Mass, d.Radius))
-        {
-            LinearVelocity = d.Velocity,
-            AngularVelocity = new Vector3(0, 0, d.Spin),
-        })).ToArray();
+        RigidBody[] bodies = AddDiscs(world, discs);
 
         float deepest = 0;
         for (int step = 0; step < 60; step++)
@@ -100,17 +85,34 @@ public class AnchoringTests
                 }
             }
 
-            for (int i = 0; i < bodies.Length; i++)
-            {
-                for (int j = i + 1; j < bodies.Length; j++)
-                {
-                    deepest = MathF.Max(deepest, bodies[i].Radius + bodies[j].Radius - Vector3.Distance(bodies[i].Position, bodies[j].Position));
-                }
-            }
+            deepest = MathF.Max(deepest, DeepestPair(bodies));
         }
 
         float bound = solver.Slop + 0.01f * discs.Min(d => d.Radius);
         _output.WriteLine($"deepest over 60 steps: {deepest} m (slop {solver.Slop} m, bound {bound} m)");
         Assert.True(deepest <= bound, $"a body ended {deepest} m deep");
+    }
+
+    /// <summary>Adds the generated world's discs: mass, radius, centre, velocity and spin about z.</summary>
+    private static RigidBody[] AddDiscs(World world, (float Mass, float Radius, Vector3 Position, Vector3 Velocity, float Spin)[] discs) =>
+        discs.Select(d => world.Add(new RigidBody(d.Mass, d.Radius, d.Position, Inertia.Disc(d.Mass, d.Radius))
+        {
+            LinearVelocity = d.Velocity,
+            AngularVelocity = new Vector3(0, 0, d.Spin),
+        })).ToArray();
+
+    /// <summary>The largest overlap r_i + r_j − |c_i − c_j| of any pair (negative when none overlaps).</summary>
+    private static float DeepestPair(RigidBody[] bodies)
+    {
+        float deepest = float.NegativeInfinity;
+        for (int i = 0; i < bodies.Length; i++)
+        {
+            for (int j = i + 1; j < bodies.Length; j++)
+            {
+                deepest = MathF.Max(deepest, bodies[i].Radius + bodies[j].Radius - Vector3.Distance(bodies[i].Position, bodies[j].Position));
+            }
+        }
+
+        return deepest;
     }
 }
