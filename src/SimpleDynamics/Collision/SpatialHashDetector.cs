@@ -21,9 +21,9 @@ namespace SimpleDynamics.Collision;
 /// intersection of the two bounding boxes, the one cell both bodies are certain to share; so no pair is found
 /// twice and no set of seen pairs is needed.</para>
 /// <para><b>Cell size</b> is twice the mean radius, chosen anew every step; along an axis the whole world spans no
-/// more than two cells of, there is one layer (a 2-D world in z = 0 would otherwise straddle two). A body that would cover more than
-/// <see cref="MaxCellsPerBody"/> cells (a huge ground disc, say) is kept out of the grid and tested against every
-/// body instead.</para>
+/// more than two cells of, there is one layer (a 2-D world in z = 0 would otherwise straddle two). A body that would
+/// cover more than <see cref="MaxCellsPerBody"/> cells (a huge ground disc, say) is kept out of the grid and tested
+/// against every body instead.</para>
 /// <para>All working arrays are kept and reused: once warm, a step allocates nothing. They shrink when asked
 /// (<see cref="TrimExcess"/>) or once calls have long needed far less than they hold (120 calls using less than a
 /// quarter: see <see cref="World.TrimExcess"/>).</para>

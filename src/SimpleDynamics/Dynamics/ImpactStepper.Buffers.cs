@@ -128,7 +128,7 @@ internal sealed partial class ImpactStepper
     {
         Buffers.EnsureCapacity(ref _next, 2 * count);
         Buffers.EnsureCapacity(ref _ends, 2 * count);
-        Buffers.EnsureCapacity(ref _inJam, count);
+        Buffers.EnsureCapacity(ref _jamState, count);
         Buffers.EnsureCapacity(ref _limit, count);
     }
 
@@ -149,7 +149,7 @@ internal sealed partial class ImpactStepper
     {
         Buffers.ShrinkTo(ref _next, 2 * capacity, 0);
         Buffers.ShrinkTo(ref _ends, 2 * capacity, 0);
-        Buffers.ShrinkTo(ref _inJam, capacity, 0);
+        Buffers.ShrinkTo(ref _jamState, capacity, 0);
         _endsStep = 0; // nothing kept: read them again
         Buffers.ShrinkTo(ref _limit, capacity, 0);
     }

@@ -21,7 +21,7 @@ internal sealed partial class ImpactStepper
     private const int JamSweeps = 8;
 
     private bool _jammed;
-    private JamState[] _inJam = new JamState[InitialContacts]; // per contact, while settling
+    private JamState[] _jamState = new JamState[InitialContacts]; // per contact, while settling
 
     /// <summary>
     /// Where a contact stands in the settling of a jam. The bodies do not move while it is settled (only their
@@ -76,7 +76,7 @@ internal sealed partial class ImpactStepper
         // Which contacts have a jammed end, marked through the jammed bodies' lists and kept up to date as bodies
         // join, so that a sweep reads one flag per contact.
         EnsureLinked();
-        Array.Clear(_inJam, 0, _contactCount);
+        Array.Clear(_jamState, 0, _contactCount);
         for (int i = 0; i < _bodyCount; i++)
         {
             if (_motion[i].Impacts >= ImpactsPerBody)
@@ -90,7 +90,7 @@ internal sealed partial class ImpactStepper
             bool pushed = false;
             for (int k = 0; k < _contactCount; k++)
             {
-                JamState state = _inJam[k];
+                JamState state = _jamState[k];
                 if (state is JamState.Out or JamState.Apart)
                 {
                     continue;
@@ -102,7 +102,7 @@ internal sealed partial class ImpactStepper
                 {
                     Measure(ref contact, planes);
                     bool apart = contact.Penetration < -HeldDepthTolerance * SmallerRadius(a, b);
-                    _inJam[k] = apart ? JamState.Apart : JamState.Touching;
+                    _jamState[k] = apart ? JamState.Apart : JamState.Touching;
                     if (apart)
                     {
                         continue; // not part of the jam
@@ -144,7 +144,7 @@ internal sealed partial class ImpactStepper
     {
         for (int e = _head[i]; e >= 0; e = _next[e])
         {
-            ref JamState state = ref _inJam[e >> 1];
+            ref JamState state = ref _jamState[e >> 1];
             if (state == JamState.Out)
             {
                 state = JamState.Joined;

@@ -149,6 +149,7 @@ public sealed partial class SequentialImpulseSolver
                 float sliding = Vector3.Dot(linear, c.Tangent1) + spin.Z;
                 c.FrictionImpulse1 = Math.Clamp(old1 - c.TangentMass1 * sliding, -limit, limit);
                 change1 = c.FrictionImpulse1 - old1;
+                // Apply without its second tangent, which is zero here: the sweeps' innermost work.
                 Vector3 planarImpulse = (normal - oldNormal) * c.Normal + change1 * c.Tangent1;
                 a.Linear += planarImpulse * a.InverseMass;
                 a.Angular += change1 * c.SpinA1;

@@ -62,8 +62,7 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
     /// it still moved, its position pass lifting back by 8–10 J a second what sank through unconverged contacts; with
     /// 8 per 32 layers (19) it still crept (1–1.5 J a second), with 16 for every pile nearly not (0.03–0.2 J a
     /// second, falling); with 8 per 16 layers (38), as with 24 for every pile, it lay still and the position pass had
-    /// nothing to do. A settled pile converges within the fixed sweeps
-    /// and spends none of them.
+    /// nothing to do. A settled pile converges within the fixed sweeps and spends none of them.
     /// </summary>
     public const float DeepPileLayers = 16f;
 
