@@ -124,7 +124,7 @@ internal sealed partial class ImpactStepper
         double vx = relative.X, vy = relative.Y, vz = relative.Z;
         double dv = dx * vx + dy * vy + dz * vz;
         double dd = dx * dx + dy * dy + dz * dz;
-        if (dv >= -ClosingTolerance * Math.Sqrt(dd) * (_motion[a].Chord.Length() + _motion[b].Chord.Length()))
+        if (!Approaches(dv, dd, _motion[a].Chord.LengthSquared(), _motion[b].Chord.LengthSquared()))
         {
             // Not approaching, or only by the rounding of a pair just answered: most contacts of a resting pile,
             // rejected before their depth limit is worked out.
@@ -145,7 +145,42 @@ internal sealed partial class ImpactStepper
             return double.PositiveInfinity; // passing by
         }
 
+        // The root s = excess / (−dv + √disc) lies beyond the substep's end h − t0 exactly when
+        // excess − (h − t0)(−dv) > (h − t0) √disc: decided without the square root for most pairs that do not meet in time.
+        double left = _h - t0, beyond = excess + left * dv;
+        if (beyond > 0 && beyond * beyond > left * left * discriminant)
+        {
+            return double.PositiveInfinity;
+        }
+
         return t0 + excess / (-dv + Math.Sqrt(discriminant)); // the smaller root, written to avoid cancellation
+    }
+
+    /// <summary>
+    /// Whether centres at squared distance <paramref name="dd"/>, whose distance changes at the rate given by
+    /// <paramref name="dv"/> = d·v (v their relative chord), approach by more than the rounding of a pair just answered:
+    /// −dv &gt; <see cref="ClosingTolerance"/> |d| (|v_A| + |v_B|). Squared, and the sum's square bounded by
+    /// |v_A|² + |v_B|² ≤ (|v_A| + |v_B|)² ≤ 2 (|v_A|² + |v_B|²), it needs a square root only between those bounds.
+    /// </summary>
+    private static bool Approaches(double dv, double dd, double chordA2, double chordB2)
+    {
+        if (dv >= 0)
+        {
+            return false;
+        }
+
+        double scale = ClosingTolerance * ClosingTolerance * dd, dv2 = dv * dv, sum2 = chordA2 + chordB2;
+        if (dv2 > 2 * scale * sum2)
+        {
+            return true;
+        }
+
+        if (dv2 <= scale * sum2)
+        {
+            return false;
+        }
+
+        return -dv > ClosingTolerance * Math.Sqrt(dd) * (Math.Sqrt(chordA2) + Math.Sqrt(chordB2));
     }
 
     /// <summary>When a body moving along its chord reaches the plane's depth limit; +∞ if it does not.</summary>
