@@ -74,20 +74,24 @@ public struct Contact
         Guard.Finite(point, nameof(point));
         Guard.Finite(normal, nameof(normal));
         Guard.Finite(penetration, nameof(penetration));
-        BodyA = bodyA;
-        BodyB = bodyB;
-        Point = point;
-        Normal = normal;
-        Penetration = penetration;
-        ApproachVelocity = Vector3.Dot(bodyA.VelocityAt(point) - bodyB.VelocityAt(point), normal);
-        NormalImpulse = 0;
-        TangentImpulse = 0;
-        Key = PairKey(bodyA.Id, bodyB.Id);
-        PlaneIndex = -1;
-        PlaneOffset = 0;
-        PlaneRestitution = null;
-        PlaneFriction = null;
+        this = Unchecked(bodyA, bodyB, point, normal, penetration);
     }
+
+    /// <summary>
+    /// The same contact without the argument checks, for detection's inner loop, whose values come from bodies the
+    /// world has checked (finite positions, positive radii) through <see cref="ContactGeometry.Unchecked"/>.
+    /// </summary>
+    internal static Contact Unchecked(RigidBody bodyA, RigidBody bodyB, Vector3 point, Vector3 normal, float penetration) => new()
+    {
+        BodyA = bodyA,
+        BodyB = bodyB,
+        Point = point,
+        Normal = normal,
+        Penetration = penetration,
+        ApproachVelocity = Vector3.Dot(bodyA.VelocityAt(point) - bodyB.VelocityAt(point), normal),
+        Key = PairKey(bodyA.Id, bodyB.Id),
+        PlaneIndex = -1,
+    };
 
     /// <summary>Relative velocity of A with respect to B at the contact point, v_pA − v_pB (eq. 13–14).</summary>
     public readonly Vector3 RelativeVelocity => BodyA.VelocityAt(Point) - BodyB.VelocityAt(Point);

@@ -53,7 +53,11 @@ public static partial class ContactGeometry
         /// lookahead 0 this is the overlap test d &lt; r_A + r_B. A reported pair with a gap has a negative
         /// <see cref="Contact.Penetration"/>.
         /// </summary>
-        public static bool TryCollide(RigidBody a, RigidBody b, float margin, float lookahead, out Contact contact)
+        public static bool TryCollide(RigidBody a, RigidBody b, float margin, float lookahead, out Contact contact) =>
+            TryCollide(a, b, a.linearVelocity.Length(), b.linearVelocity.Length(), margin, lookahead, out contact);
+
+        /// <summary>The same, given the bodies' speeds |v_A| and |v_B| (detection works them out once per body, not per pair).</summary>
+        public static bool TryCollide(RigidBody a, RigidBody b, float speedA, float speedB, float margin, float lookahead, out Contact contact)
         {
             contact = default;
             if (!a.IsDynamic && !b.IsDynamic)
@@ -61,7 +65,7 @@ public static partial class ContactGeometry
                 return false; // two infinite masses: nothing to resolve
             }
 
-            float reach = a.radius + b.radius + margin + lookahead * (a.linearVelocity.Length() + b.linearVelocity.Length());
+            float reach = a.radius + b.radius + margin + lookahead * (speedA + speedB);
             if (Vector3.DistanceSquared(a.position, b.position) >= reach * reach)
             {
                 return false;
@@ -71,7 +75,7 @@ public static partial class ContactGeometry
             float penetration = CirclePenetration(a.position, a.radius, b.position, b.radius, out Vector3 normal);
 
             Vector3 point = a.position - normal * (a.radius - 0.5f * penetration);
-            contact = new Contact(a, b, point, normal, penetration);
+            contact = Contact.Unchecked(a, b, point, normal, penetration);
             return true;
         }
 
@@ -95,7 +99,7 @@ public static partial class ContactGeometry
 
             if (!PairFilter.Allows(body, plane, planeIndex)) return false; // filtered pairs and sensors never become contacts
             Vector3 point = body.position - plane.Normal * (body.radius - 0.5f * penetration);
-            contact = new Contact(body, ground, point, plane.Normal, penetration)
+            contact = Contact.Unchecked(body, ground, point, plane.Normal, penetration) with
             {
                 Key = Contact.PlaneKey(body.Id, planeIndex),
                 PlaneIndex = planeIndex,

@@ -112,11 +112,12 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
         for (int i = 0; i < bodies.Length; i++)
         {
             RigidBody body = bodies[i];
-            float reach = body.radius + halfMargin + lookahead * body.linearVelocity.Length();
+            float speed = body.linearVelocity.Length();
+            float reach = body.radius + halfMargin + lookahead * speed;
             // Grown by a rounding allowance, so that pairs that touch to within float rounding share a cell.
             Vector3 c = body.position;
             reach += 1e-6f * (MathF.Abs(c.X) + MathF.Abs(c.Y) + MathF.Abs(c.Z) + reach);
-            _bounds[i] = new Bounds { Centre = c, Radius = reach };
+            _bounds[i] = new Bounds { Centre = c, Radius = reach, Speed = speed };
             radiusSum += reach;
             low = Vector3.Min(low, c - new Vector3(reach));
             high = Vector3.Max(high, c + new Vector3(reach));
@@ -253,7 +254,7 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
                         continue; // this pair is reported in another cell
                     }
 
-                    if (ContactGeometry.Unchecked.TryCollide(bodies[i], bodies[j], margin, lookahead, out Contact contact))
+                    if (ContactGeometry.Unchecked.TryCollide(bodies[i], bodies[j], _bounds[i].Speed, _bounds[j].Speed, margin, lookahead, out Contact contact))
                     {
                         collisions.Add(contact);
                     }
@@ -304,6 +305,7 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
     {
         public Vector3 Centre;
         public float Radius;
+        public float Speed; // |v|, for the exact test of a pair
         public Cell Min;
         public Cell Max;
         public bool Oversized;

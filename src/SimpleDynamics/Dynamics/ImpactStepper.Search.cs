@@ -30,16 +30,19 @@ internal sealed partial class ImpactStepper
         float speed = MathF.Max(_motion[i].Chord.Length(), (_motion[i].U + _motion[i].A * (float)(_h - _motion[i].T)).Length());
         _reach[i] = MathF.Max(2 * _reach[i], Vector3.Distance(end, _stepStart[i]) + speed * stepTimeLeft);
         EnsurePairs(contacts);
+        Vector3 start = _stepStart[i];
+        float ownReach = body.radius + _reach[i];
         for (int j = 0; j < bodies.Length; j++)
         {
-            RigidBody other = bodies[j];
-            if (j == i || (!body.IsDynamic && !other.IsDynamic))
+            // The spheres first, from the pass's own arrays: most bodies are far, and are rejected without being read.
+            float reach = ownReach + _motion[j].Radius + _reach[j];
+            if (j == i || Vector3.DistanceSquared(start, _stepStart[j]) >= reach * reach)
             {
                 continue;
             }
 
-            float reach = body.radius + _reach[i] + other.radius + _reach[j];
-            if (Vector3.DistanceSquared(_stepStart[i], _stepStart[j]) >= reach * reach)
+            RigidBody other = bodies[j];
+            if (!body.IsDynamic && !other.IsDynamic)
             {
                 continue;
             }
@@ -51,7 +54,7 @@ internal sealed partial class ImpactStepper
             }
 
             float penetration = ContactGeometry.Unchecked.CirclePenetration(first.position, first.radius, second.position, second.radius, out Vector3 normal);
-            AddContact(contacts, new Contact(first, second, first.position - normal * (first.radius - 0.5f * penetration), normal, penetration));
+            AddContact(contacts, Contact.Unchecked(first, second, first.position - normal * (first.radius - 0.5f * penetration), normal, penetration));
         }
 
         if (!body.IsDynamic)
