@@ -99,7 +99,6 @@ internal sealed partial class ImpactStepper
         }
 
         _queue.ShrinkIfIdle(contacts);
-        _pairs.ShrinkIfIdle(contacts);
     }
 
     /// <summary>Gives back all the spare room (between steps, when the arrays hold nothing).</summary>
@@ -108,7 +107,6 @@ internal sealed partial class ImpactStepper
         ShrinkBodies(InitialBodies);
         ShrinkContacts(InitialContacts);
         _queue.TrimExcess();
-        _pairs.TrimExcess();
     }
 
     private void EnsureBodies(int n)

@@ -29,7 +29,7 @@ internal sealed partial class ImpactStepper
         Vector3 end = _motion[i].X + _motion[i].Chord * (float)(_h - _motion[i].T);
         float speed = MathF.Max(_motion[i].Chord.Length(), (_motion[i].U + _motion[i].A * (float)(_h - _motion[i].T)).Length());
         _reach[i] = MathF.Max(2 * _reach[i], Vector3.Distance(end, _stepStart[i]) + speed * stepTimeLeft);
-        EnsurePairs(contacts);
+        EnsureLinked();
         Vector3 start = _stepStart[i];
         float ownReach = body.radius + _reach[i];
         for (int j = 0; j < bodies.Length; j++)
@@ -48,7 +48,7 @@ internal sealed partial class ImpactStepper
             }
 
             RigidBody first = i < j ? body : other, second = i < j ? other : body;
-            if (!PairFilter.Allows(first, second) || !_pairs.Add(Contact.PairKey(first.Id, second.Id)))
+            if (!PairFilter.Allows(first, second) || HasContactWith(i, j))
             {
                 continue; // filtered or sensor pairs never become contacts; others may have one already
             }
@@ -66,7 +66,7 @@ internal sealed partial class ImpactStepper
         for (int p = 0; p < planes.Length; p++)
         {
             if (planes[p].DistanceTo(_stepStart[i]) - body.radius < _reach[i] &&
-                _pairs.Add(Contact.PlaneKey(body.Id, p)) &&
+                !HasContactWithPlane(i, p) &&
                 ContactGeometry.Unchecked.TryCollide(body, planes[p], p, step.World.Ground, float.PositiveInfinity, 0f, out Contact contact))
             {
                 AddContact(contacts, contact);
@@ -91,19 +91,31 @@ internal sealed partial class ImpactStepper
         Predict(k);
     }
 
-    private void EnsurePairs(CollisionData contacts)
+    /// <summary>Whether body <paramref name="i"/> has a contact with body <paramref name="j"/> this step, read from its list.</summary>
+    private bool HasContactWith(int i, int j)
     {
-        if (_pairsReady)
+        for (int e = _head[i]; e >= 0; e = _next[e])
         {
-            return;
+            if (_ends[e ^ 1] == j)
+            {
+                return true; // the other end of the contact listed under end e
+            }
         }
 
-        _pairs.Reset(contacts.Count + 16);
-        foreach (ref readonly Contact contact in contacts.Contacts)
+        return false;
+    }
+
+    /// <summary>Whether body <paramref name="i"/> has a contact with plane <paramref name="p"/> this step.</summary>
+    private bool HasContactWithPlane(int i, int p)
+    {
+        for (int e = _head[i]; e >= 0; e = _next[e])
         {
-            _pairs.Add(contact.Key);
+            if (_ends[e ^ 1] < 0 && _contacts[e >> 1].PlaneIndex == p)
+            {
+                return true;
+            }
         }
 
-        _pairsReady = true;
+        return false;
     }
 }

@@ -85,8 +85,6 @@ internal sealed partial class ImpactStepper
     private int _bodyCount;
     private bool _linked; // whether _head/_next list each body's contacts yet: only needed once an impact happens
     private readonly EventQueue _queue = new();
-    private readonly PairKeySet _pairs = new();
-    private bool _pairsReady;
     private double _h;
     private long _stepNumber;
 
@@ -130,7 +128,6 @@ internal sealed partial class ImpactStepper
             _reach[i] = 0.5f * margin + lookahead * body.linearVelocity.Length();
         }
 
-        _pairsReady = false;
         ImpactCount = 0;
         SaturatedSubsteps = 0;
         Searches = 0;
