@@ -67,7 +67,7 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
         int entryCount = LastEntryCount = CountEntries(n, inverseCellSize);
         int bucketMask = PrepareBuckets(entryCount);
         FillBuckets(n, bucketMask);
-        FindPairsInBuckets(bodies, bucketMask, collisions, inverseCellSize, margin, lookahead);
+        FindPairsInBuckets(bodies, bucketMask, collisions, margin, lookahead);
         FindPairsWithOversized(bodies, collisions, margin, lookahead);
         ShrinkIfIdle(n, entryCount, bucketMask + 2);
     }
@@ -226,7 +226,7 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
         _bucketStart[0] = 0;
     }
 
-    private void FindPairsInBuckets(ReadOnlySpan<RigidBody> bodies, int bucketMask, CollisionData collisions, Vector3 inverseCellSize, float margin, float lookahead)
+    private void FindPairsInBuckets(ReadOnlySpan<RigidBody> bodies, int bucketMask, CollisionData collisions, float margin, float lookahead)
     {
         for (int k = 0; k <= bucketMask; k++)
         {
@@ -243,15 +243,15 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
                     }
 
                     int i = Math.Min(first.Body, second.Body), j = Math.Max(first.Body, second.Body);
+                    if (!first.Cell.Equals(OwnerCell(i, j)))
+                    {
+                        continue; // this pair is reported in another cell (most pairs of a moving crowd share several)
+                    }
+
                     float reach = _bounds[i].Radius + _bounds[j].Radius;
                     if (Vector3.DistanceSquared(_bounds[i].Centre, _bounds[j].Centre) >= reach * reach)
                     {
-                        continue; // the spheres do not meet (they are never a contact, whichever cell owns them)
-                    }
-
-                    if (!first.Cell.Equals(OwnerCell(i, j, inverseCellSize)))
-                    {
-                        continue; // this pair is reported in another cell
+                        continue; // the spheres do not meet
                     }
 
                     if (ContactGeometry.Unchecked.TryCollide(bodies[i], bodies[j], _bounds[i].Speed, _bounds[j].Speed, margin, lookahead, out Contact contact))
@@ -285,12 +285,15 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
         }
     }
 
-    /// <summary>The cell of the minimum corner of the intersection of two bounding boxes.</summary>
-    private Cell OwnerCell(int i, int j, Vector3 inverseCellSize)
+    /// <summary>
+    /// The cell of the minimum corner of the intersection of two bounding boxes. That corner is the larger of the
+    /// boxes' minimum corners along each axis, and the cell of a coordinate never decreases as it grows, so its cell
+    /// is the larger of their minimum cells along each axis: integers already at hand, no rounding to redo.
+    /// </summary>
+    private Cell OwnerCell(int i, int j)
     {
-        Vector3 cornerI = _bounds[i].Centre - new Vector3(_bounds[i].Radius);
-        Vector3 cornerJ = _bounds[j].Centre - new Vector3(_bounds[j].Radius);
-        return CellOf(Vector3.Max(cornerI, cornerJ), inverseCellSize);
+        Cell a = _bounds[i].Min, b = _bounds[j].Min;
+        return new Cell(Math.Max(a.X, b.X), Math.Max(a.Y, b.Y), Math.Max(a.Z, b.Z));
     }
 
     private static Cell CellOf(Vector3 point, Vector3 inverseCellSize) =>
