@@ -16,9 +16,6 @@ internal struct ContactConstraint
 {
     public int A, B;
 
-    /// <summary>Whether the contact is solved in this substep: touching and not colliding.</summary>
-    public bool Active;
-
     /// <summary>Whether A is the upper body along gravity (B lies below it, or is the ground), for shock propagation.</summary>
     public bool AIsUpper;
 

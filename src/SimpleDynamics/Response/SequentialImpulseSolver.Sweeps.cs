@@ -13,16 +13,11 @@ public sealed partial class SequentialImpulseSolver
     /// substep's after that), so that a resting pile starts each substep almost solved. Without warm starting they
     /// start from zero.
     /// </summary>
-    private void WarmStart(int count)
+    private void WarmStart()
     {
-        for (int k = 0; k < count; k++)
+        foreach (int k in _active.AsSpan(0, _activeCount))
         {
             ref ContactConstraint c = ref _constraints[k];
-            if (!c.Active)
-            {
-                continue;
-            }
-
             if (!WarmStarting)
             {
                 c.NormalImpulse = c.FrictionImpulse1 = c.FrictionImpulse2 = 0;
@@ -40,7 +35,7 @@ public sealed partial class SequentialImpulseSolver
     /// <see cref="VelocityIterations"/> Gauss–Seidel sweeps over every contact, bottom-up, then up to
     /// <see cref="ExtraIterations"/> more while the last one has not converged.
     /// </summary>
-    private void Sweeps(int count)
+    private void Sweeps()
     {
         // Only the last fixed sweep's convergence decides whether extra ones follow; the others need no measuring.
         bool converged = false;
@@ -48,32 +43,28 @@ public sealed partial class SequentialImpulseSolver
         {
             if (iteration < _velocityIterations - 1 || _extraSweeps == 0)
             {
-                SweepUnmeasured(count);
+                SweepUnmeasured();
             }
             else
             {
-                converged = Sweep(count);
+                converged = Sweep();
             }
         }
 
         // Further sweeps only while the last one has not converged (a settled pile needs none).
         for (int extra = 0; extra < _extraSweeps && !converged; extra++)
         {
-            converged = Sweep(count);
+            converged = Sweep();
         }
     }
 
     /// <summary>One Gauss–Seidel sweep over every contact, bottom-up, when nothing asks whether it converged.</summary>
-    private void SweepUnmeasured(int count)
+    private void SweepUnmeasured()
     {
         SweepsThisStep++;
-        for (int k = 0; k < count; k++)
+        foreach (int k in _active.AsSpan(0, _activeCount))
         {
-            ref ContactConstraint c = ref _constraints[k];
-            if (c.Active)
-            {
-                SolveContact(ref c);
-            }
+            SolveContact(ref _constraints[k]);
         }
     }
 
@@ -88,18 +79,13 @@ public sealed partial class SequentialImpulseSolver
     /// the bottom's) counted as converged while it still sank: a 4,000-disc pit kept creeping at 1–2 cm/s with a
     /// hundred impacts per step; with this measure it is at rest (every ball under 1 mm/s) 9 s after its pour began.
     /// </remarks>
-    private bool Sweep(int count)
+    private bool Sweep()
     {
         SweepsThisStep++;
         float largestChange = 0, largestImpulse = 0, largestSpeedChange = 0;
-        for (int k = 0; k < count; k++)
+        foreach (int k in _active.AsSpan(0, _activeCount))
         {
             ref ContactConstraint c = ref _constraints[k];
-            if (!c.Active)
-            {
-                continue;
-            }
-
             float before = c.NormalImpulse;
             SolveContact(ref c);
             float change = MathF.Abs(c.NormalImpulse - before);
@@ -205,14 +191,14 @@ public sealed partial class SequentialImpulseSolver
     /// faster than 5 cm/s, rms speed 3.9–4.5 cm/s, deepest overlap 2.7–4.1 mm; with the sweep, 50–200 impacts,
     /// 80–500 discs, 1.1–2.4 cm/s and 1.2–1.8 mm. Such a pile still does not come to rest.
     /// </remarks>
-    private bool PropagateShock(int count)
+    private bool PropagateShock()
     {
         float tolerance = _convergenceTolerance * _gravity.Length() * _step!.SubstepLength;
         bool changed = false;
-        for (int k = 0; k < count; k++)
+        foreach (int k in _active.AsSpan(0, _activeCount))
         {
             ref ContactConstraint c = ref _constraints[k];
-            if (!c.Active || !c.CarriesWeight)
+            if (!c.CarriesWeight)
             {
                 continue;
             }
@@ -263,16 +249,11 @@ public sealed partial class SequentialImpulseSolver
     /// Adds this substep's contact impulses to the step's totals, which the contacts report, and keeps the friction
     /// impulse as a world vector for the next substep (whose tangents will have turned with the contact).
     /// </summary>
-    private void AddToStepTotals(int count)
+    private void AddToStepTotals()
     {
-        for (int k = 0; k < count; k++)
+        foreach (int k in _active.AsSpan(0, _activeCount))
         {
             ref ContactConstraint c = ref _constraints[k];
-            if (!c.Active)
-            {
-                continue;
-            }
-
             c.FrictionImpulse = c.FrictionImpulse1 * c.Tangent1 + c.FrictionImpulse2 * c.Tangent2;
             c.StepNormalImpulse += c.NormalImpulse;
             c.StepFrictionImpulse += MathF.Sqrt(c.FrictionImpulse1 * c.FrictionImpulse1 + c.FrictionImpulse2 * c.FrictionImpulse2);

@@ -267,14 +267,14 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
         PrepareConstraints(contacts); // any the impact pass added during the last substep
         GatherState(step.Bodies);
         MeasureConstraints(contacts);
-        WarmStart(contacts.Length);
-        Sweeps(contacts.Length);
-        if (step.Gravity != Vector3.Zero && PropagateShock(contacts.Length))
+        WarmStart();
+        Sweeps();
+        if (step.Gravity != Vector3.Zero && PropagateShock())
         {
-            SweepUnmeasured(contacts.Length); // the contacts the shock pass turned into approaches (see PropagateShock)
+            SweepUnmeasured(); // the contacts the shock pass turned into approaches (see PropagateShock)
         }
 
-        AddToStepTotals(contacts.Length);
+        AddToStepTotals();
         ScatterVelocities(step.Bodies);
     }
 
