@@ -166,10 +166,16 @@ public sealed partial class SequentialImpulseSolver
 
     /// <summary>
     /// Puts the contacts in the order they are solved (<see cref="OrderAlongGravity"/>), so that every pass over
-    /// contacts and constraints walks both arrays front to back: constraint k is contact k.
+    /// contacts and constraints walks both arrays front to back: constraint k is contact k. Contacts already in that
+    /// order (always, without gravity) are not copied.
     /// </summary>
     private void ArrangeContacts(Span<Contact> contacts)
     {
+        if (IsIdentity(_order.AsSpan(0, contacts.Length)))
+        {
+            return;
+        }
+
         Buffers.EnsureCapacity(ref _arranged, contacts.Length);
         for (int k = 0; k < contacts.Length; k++)
         {
@@ -305,6 +311,19 @@ public sealed partial class SequentialImpulseSolver
             c.FrictionImpulse1 = Vector3.Dot(c.FrictionImpulse, c.Tangent1);
             ClampFriction(ref c);
         }
+    }
+
+    private static bool IsIdentity(ReadOnlySpan<int> order)
+    {
+        for (int k = 0; k < order.Length; k++)
+        {
+            if (order[k] != k)
+            {
+                return false;
+            }
+        }
+
+        return true;
     }
 
     private int SlotOf(RigidBody body) => body.index < 0 ? 0 : _slotOf[body.index]; // the ground (index −1) is slot 0
