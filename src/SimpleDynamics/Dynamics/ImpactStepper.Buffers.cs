@@ -120,6 +120,8 @@ internal sealed partial class ImpactStepper
         Buffers.EnsureCapacity(ref _motion, n);
         Buffers.EnsureCapacity(ref _held, n);
         Buffers.EnsureCapacity(ref _head, n);
+        Buffers.EnsureCapacity(ref _anchorDistance, n);
+        Buffers.EnsureCapacity(ref _anchorQueue, n);
     }
 
     private void EnsureContacts(int count)
@@ -141,6 +143,8 @@ internal sealed partial class ImpactStepper
         Buffers.ShrinkTo(ref _motion, capacity, 0);
         Buffers.ShrinkTo(ref _held, capacity, 0);
         Buffers.ShrinkTo(ref _head, capacity, 0);
+        Buffers.ShrinkTo(ref _anchorDistance, capacity, 0);
+        Buffers.ShrinkTo(ref _anchorQueue, capacity, 0);
     }
 
     private void ShrinkContacts(int capacity)

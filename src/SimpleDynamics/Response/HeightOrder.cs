@@ -3,16 +3,21 @@ using System;
 namespace SimpleDynamics.Response;
 
 /// <summary>
-/// Orders items from the lowest to the highest in O(n): a counting sort into n equal slices between the lowest
-/// and the highest height, stable, with no sorting inside a slice (about one item each). The solver's sweeps need
-/// the order only roughly, bottom-up, so this is as good as a comparison sort and several times faster on large
-/// piles. Reuses its one working array.
+/// Orders items from the lowest to the highest, stable: a counting sort into n equal slices between the lowest and
+/// the highest height, then each slice put in order on its own. A pile spreads over its slices with about one item in
+/// each, so the whole costs O(n); a small world with one body far above the rest puts most items in one slice, and the
+/// slice's own sort keeps them in order (the solver's shock passes go bottom-up and need it: a body corrected out of
+/// the ground after the contact above it was corrected is pushed back into that contact). Reuses its working arrays.
 /// </summary>
 internal sealed class HeightOrder
 {
     private const int InitialCapacity = 17;
 
+    /// <summary>Slices up to this size are put in order by insertion; larger ones by a comparison sort of keys.</summary>
+    private const int InsertionSlice = 32;
+
     private int[] _cursor = new int[InitialCapacity];
+    private long[] _keys = new long[InitialCapacity]; // a large slice's (height, index) keys while it is sorted
     private int _peak; // the most slices one sort used since the last ShrinkIfIdle
     private ShrinkPolicy _room;
 
@@ -20,11 +25,20 @@ internal sealed class HeightOrder
     public void ShrinkIfIdle()
     {
         Buffers.ShrinkIfIdle(ref _cursor, _peak, ref _room, InitialCapacity);
+        if (_keys.Length > _cursor.Length)
+        {
+            Buffers.ShrinkTo(ref _keys, _cursor.Length, 0);
+        }
+
         _peak = 0;
     }
 
     /// <summary>Gives back all the spare room.</summary>
-    public void TrimExcess() => Buffers.ShrinkTo(ref _cursor, InitialCapacity, 0);
+    public void TrimExcess()
+    {
+        Buffers.ShrinkTo(ref _cursor, InitialCapacity, 0);
+        Buffers.ShrinkTo(ref _keys, InitialCapacity, 0);
+    }
 
     /// <summary>Fills <paramref name="order"/> with the indices 0 … n − 1 of <paramref name="heights"/>, lowest first.</summary>
     public void Sort(ReadOnlySpan<float> heights, Span<int> order)
@@ -66,6 +80,63 @@ internal sealed class HeightOrder
             order[_cursor[Slice(heights[i])]++] = i;
         }
 
+        // _cursor[s] is now where slice s + 1 begins.
+        for (int s = 0, start = 0; s < n; start = _cursor[s], s++)
+        {
+            int count = _cursor[s] - start;
+            if (count > InsertionSlice)
+            {
+                SortByKeys(heights, order.Slice(start, count));
+            }
+            else if (count > 1)
+            {
+                SortByInsertion(heights, order.Slice(start, count));
+            }
+        }
+
         int Slice(float height) => Math.Min((int)((height - lowest) * scale), n - 1);
+    }
+
+    /// <summary>Stable insertion sort of a few indices by their heights.</summary>
+    private static void SortByInsertion(ReadOnlySpan<float> heights, Span<int> slice)
+    {
+        for (int k = 1; k < slice.Length; k++)
+        {
+            int item = slice[k];
+            float height = heights[item];
+            int j = k - 1;
+            for (; j >= 0 && heights[slice[j]] > height; j--)
+            {
+                slice[j + 1] = slice[j];
+            }
+
+            slice[j + 1] = item;
+        }
+    }
+
+    /// <summary>
+    /// Sorts many indices by (height, index), packed into one 64-bit key each so that an unstable comparison sort of
+    /// the keys is stable in the items: the height's bits made to order as integers do, then the index.
+    /// </summary>
+    private void SortByKeys(ReadOnlySpan<float> heights, Span<int> slice)
+    {
+        Buffers.EnsureCapacity(ref _keys, slice.Length);
+        for (int k = 0; k < slice.Length; k++)
+        {
+            _keys[k] = ((long)OrderedBits(heights[slice[k]]) << 32) | (uint)slice[k];
+        }
+
+        Array.Sort(_keys, 0, slice.Length); // the keys are distinct (their indices are), so any sort orders them the same
+        for (int k = 0; k < slice.Length; k++)
+        {
+            slice[k] = (int)(_keys[k] & 0xFFFFFFFF);
+        }
+    }
+
+    /// <summary>The bits of a finite float as an int that orders as the float does (negative floats' bits reversed).</summary>
+    private static int OrderedBits(float height)
+    {
+        int bits = BitConverter.SingleToInt32Bits(height + 0f); // + 0: −0 becomes +0, equal to it
+        return bits >= 0 ? bits : bits ^ int.MaxValue;
     }
 }
