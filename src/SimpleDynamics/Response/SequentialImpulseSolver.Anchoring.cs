@@ -47,7 +47,7 @@ public sealed partial class SequentialImpulseSolver
             return;
         }
 
-        ListTouchingContacts(count, slots);
+        ListTouchingContacts(count, slots, everyContact: false);
 
         // Breadth-first from everything immovable, so bodies come nearest first; each contact between distances d and
         // d + 1 is answered once, from its nearer end, by moving only the body at d + 1.
@@ -91,8 +91,11 @@ public sealed partial class SequentialImpulseSolver
         }
     }
 
-    /// <summary>Lists each slot's touching contacts (a counting sort by slot: two passes over the contacts).</summary>
-    private void ListTouchingContacts(int count, int slots)
+    /// <summary>
+    /// Lists each slot's touching contacts that carry no weight, or with <paramref name="everyContact"/> all those apart
+    /// by no more than the slop, which a correction can bring into touch (a counting sort by slot: two passes over the contacts).
+    /// </summary>
+    private void ListTouchingContacts(int count, int slots, bool everyContact)
     {
         Buffers.EnsureCapacity(ref _touchingStart, slots + 1);
         Buffers.EnsureCapacity(ref _touchingFill, slots);
@@ -101,7 +104,7 @@ public sealed partial class SequentialImpulseSolver
         for (int k = 0; k < count; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
-            if (!c.CarriesWeight && Depth(ref c, out _) >= 0)
+            if ((everyContact || !c.CarriesWeight) && Depth(ref c, out _) >= (everyContact ? -_slop : 0f))
             {
                 _touchingStart[c.A + 1]++;
                 _touchingStart[c.B + 1]++;
@@ -117,7 +120,7 @@ public sealed partial class SequentialImpulseSolver
         for (int k = 0; k < count; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
-            if (!c.CarriesWeight && Depth(ref c, out _) >= 0)
+            if ((everyContact || !c.CarriesWeight) && Depth(ref c, out _) >= (everyContact ? -_slop : 0f))
             {
                 _touching[_touchingFill[c.A]++] = k;
                 _touching[_touchingFill[c.B]++] = k;
@@ -131,14 +134,7 @@ public sealed partial class SequentialImpulseSolver
     /// </summary>
     private bool LeavesExcessDepth(int count)
     {
-        bool anchored = false;
-        for (int k = 0; k < count && !anchored; k++)
-        {
-            ref ContactConstraint c = ref _constraints[k];
-            anchored = _bodies[c.A].InverseMass == 0 || _bodies[c.B].InverseMass == 0;
-        }
-
-        if (!anchored)
+        if (!TouchesAnythingImmovable(count))
         {
             return false;
         }
@@ -147,6 +143,21 @@ public sealed partial class SequentialImpulseSolver
         {
             ref ContactConstraint c = ref _constraints[k];
             if (!c.IsPlaneContact && !c.CarriesWeight && _bodies[c.A].InverseMass > 0 && _bodies[c.B].InverseMass > 0 && Depth(ref c, out _) > _slop)
+            {
+                return true;
+            }
+        }
+
+        return false;
+    }
+
+    /// <summary>Whether a contact has an immovable end (a plane, a static body): else no correction can start from one.</summary>
+    private bool TouchesAnythingImmovable(int count)
+    {
+        for (int k = 0; k < count; k++)
+        {
+            ref ContactConstraint c = ref _constraints[k];
+            if (_bodies[c.A].InverseMass == 0 || _bodies[c.B].InverseMass == 0)
             {
                 return true;
             }

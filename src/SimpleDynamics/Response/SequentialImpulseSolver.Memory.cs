@@ -64,6 +64,7 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _anchorQueue, capacity, 0);
         Buffers.ShrinkTo(ref _touchingStart, capacity + 1, 0);
         Buffers.ShrinkTo(ref _touchingFill, capacity, 0);
+        Buffers.ShrinkTo(ref _corrections, capacity, 0);
     }
 
     private void ShrinkContacts(int capacity)
@@ -74,5 +75,7 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _active, capacity, 0);
         Buffers.ShrinkTo(ref _arranged, capacity, 0);
         Buffers.ShrinkTo(ref _touching, 2 * capacity, 0);
+        Buffers.ShrinkTo(ref _deepQueue, capacity, 0);
+        Buffers.ShrinkTo(ref _queued, capacity, 0);
     }
 }

@@ -33,17 +33,23 @@ public sealed partial class SequentialImpulseSolver
         // gravity, is corrected in full, split by inverse mass.
         // A settled pile corrects next to nothing here; a jam against a wall corrects a sideways contact by much more,
         // and only then can the walk from what cannot move have anything to do.
-        bool sidewaysCorrected = false;
+        bool sidewaysCorrected = false, corrected = false;
         for (int k = 0; k < count; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
             float correction = CorrectPosition(ref c, shock: c.CarriesWeight, factor: 1f);
             sidewaysCorrected |= !c.CarriesWeight && correction > 0.01f * _slop;
+            corrected |= correction > 0.01f * _slop;
         }
 
         if (sidewaysCorrected)
         {
             PropagateFromAnchors(count, bodies.Length + 1); // see SequentialImpulseSolver.Anchoring.cs
+        }
+
+        if (corrected && TouchesAnythingImmovable(count))
+        {
+            SweepWhatStaysDeep(count, bodies.Length + 1); // see SequentialImpulseSolver.Residual.cs
         }
 
         for (int i = 0; i < bodies.Length; i++)

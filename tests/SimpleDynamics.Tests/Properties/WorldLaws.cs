@@ -137,7 +137,7 @@ public class WorldLaws
 
                 double energy = Energy(world, bodies);
                 Law.Holds(energy <= e0 + 1e-5 * eScale + energyRounding, $"{at}: mechanical energy rose from {e0:R} to {energy:R} J (scale {eScale:R}, float32 rounding budget {energyRounding:R} J)");
-                CheckNothingPassedThrough(c, world, bodies, before, solver.Slop, DepthAllowance(bodies), at);
+                CheckNothingPassedThrough(c, world, bodies, before, solver.Slop, at);
                 for (int i = 0; i < bodies.Length; i++)
                 {
                     before[i] = bodies[i].Position;
@@ -191,20 +191,21 @@ public class WorldLaws
         Measure.KineticEnergy(bodies) - bodies.Sum(b => b.Mass * (double)Vector3.Dot(world.Gravity, b.Position));
 
     /// <summary>
-    /// Nobody behind a wall or outside the box, no pair deeper than the slop (plus the allowance of DepthAllowance), and no
+    /// Nobody deeper than the slop into a wall, nor any pair into each other, whatever their masses (both up to float
+    /// rounding of where the bodies end, 1e-5 of their size), and no
     /// pair whose relative motion over the step went straight through: for two bodies that nothing but each other
     /// pushed in the step, a single bounce keeps both ends of the relative path on the outer side of the tangent plane
     /// at the contact, so a chord that passes within half the sum of the radii of the other centre, with both ends
     /// outside, crossed the body. (A body that bounced off a wall or a third body in the step may end anywhere: its
     /// pairs are not judged by their chord.)
     /// </summary>
-    private static void CheckNothingPassedThrough(WorldCase c, World world, RigidBody[] bodies, Vector3[] before, float slop, float allowance, string at)
+    private static void CheckNothingPassedThrough(WorldCase c, World world, RigidBody[] bodies, Vector3[] before, float slop, string at)
     {
         int[][] pushedBy = PushPartners(world, bodies);
         for (int i = 0; i < bodies.Length; i++)
         {
             RigidBody a = bodies[i];
-            float tolerance = slop + allowance * a.Radius;
+            float tolerance = slop + 1e-5f * a.Radius;
             for (int p = 0; p < world.Planes.Length; p++)
             {
                 float depth = a.Radius - world.Planes[p].DistanceTo(a.Position);
@@ -216,7 +217,7 @@ public class WorldLaws
                 RigidBody b = bodies[j];
                 float reach = a.Radius + b.Radius;
                 float depth = reach - Vector3.Distance(a.Position, b.Position);
-                Law.Holds(depth <= slop + allowance * MathF.Min(a.Radius, b.Radius) + 1e-5f * reach,
+                Law.Holds(depth <= slop + 1e-5f * reach,
                     $"{at}: bodies {i} and {j} overlap by {depth:R} m");
                 Vector3 start = before[i] - before[j], end = a.Position - b.Position;
                 if (!MetOnlyEachOther(pushedBy, i, j))
@@ -229,16 +230,6 @@ public class WorldLaws
             }
         }
     }
-
-    /// <summary>
-    /// The depth beyond the slop a step may leave, as a fraction of the smaller radius: none while no body is more than
-    /// 1e3 times heavier than another (the range, resting stacks included), 1 % beyond that. What exceeds the
-    /// slop there is a jam: a light body crushed against a wall by a body 1e4 times heavier (seed 801, case 112:
-    /// 0.025 kg between 240 kg and 11 kg bodies and a wall, 0.17 mm beyond the slop) — pairwise impacts and a
-    /// Gauss–Seidel position sweep converge only as fast as the mass ratio allows.
-    /// </summary>
-    private static float DepthAllowance(RigidBody[] bodies) =>
-        bodies.Max(b => b.Mass) <= 1e3f * bodies.Min(b => b.Mass) ? 1e-6f : 1e-2f;
 
     /// <summary>
     /// For each body, what pushed it in the last step: the indices of the bodies (and −1 − p for plane p) of its

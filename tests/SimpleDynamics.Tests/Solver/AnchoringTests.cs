@@ -44,12 +44,11 @@ public class AnchoringTests
     /// 1.2·10³), where the 0.38 kg disc is driven into the bottom right-hand corner and ended step 37 1.2 mm into the
     /// wall (3.2 mm by step 60). The shock sweep answers the contacts that carry weight, bottom-up; the sideways ones, a
     /// light disc between the wall and heavier ones, were split by inverse mass as without gravity. With the distance
-    /// from the walls over the sideways contacts it ends no deeper than 0.86 mm: within the slop plus 1 % of its radius,
-    /// the bound the world-laws property keeps beyond a mass ratio of 10³ (in the corner the floor's contact carries
-    /// weight and is the shock sweep's).
+    /// from the walls over the sideways contacts it ended no deeper than 0.86 mm; with the contacts still too deep swept
+    /// again on their own (SequentialImpulseSolver.Residual.cs) it ends within the slop, up to float rounding.
     /// </summary>
     [Fact]
-    public void Under_gravity_a_light_disc_driven_sideways_into_a_wall_ends_within_the_slop_and_a_hundredth_of_its_radius()
+    public void Under_gravity_a_light_disc_driven_sideways_into_a_wall_ends_within_the_slop()
     {
         (float Mass, float Radius, Vector3 Position, Vector3 Velocity, float Spin)[] discs =
         {
@@ -75,7 +74,7 @@ public class AnchoringTests
             deepest = MathF.Max(deepest, DeepestPair(bodies));
         }
 
-        float bound = solver.Slop + 0.01f * discs.Min(d => d.Radius);
+        float bound = solver.Slop + 1e-5f * discs.Min(d => d.Radius);
         _output.WriteLine($"deepest over 60 steps: {deepest} m (slop {solver.Slop} m, bound {bound} m)");
         Assert.True(deepest <= bound, $"a body ended {deepest} m deep");
     }
