@@ -104,7 +104,7 @@ public sealed partial class SequentialImpulseSolver
         for (int k = 0; k < count; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
-            if ((everyContact || !c.CarriesWeight) && Depth(ref c, out _) >= (everyContact ? -_slop : 0f))
+            if (IsListed(ref c, everyContact))
             {
                 _touchingStart[c.A + 1]++;
                 _touchingStart[c.B + 1]++;
@@ -120,13 +120,17 @@ public sealed partial class SequentialImpulseSolver
         for (int k = 0; k < count; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
-            if ((everyContact || !c.CarriesWeight) && Depth(ref c, out _) >= (everyContact ? -_slop : 0f))
+            if (IsListed(ref c, everyContact))
             {
                 _touching[_touchingFill[c.A]++] = k;
                 _touching[_touchingFill[c.B]++] = k;
             }
         }
     }
+
+    /// <summary>Whether <see cref="ListTouchingContacts"/> lists the contact (both of its passes ask the same).</summary>
+    private bool IsListed(ref ContactConstraint c, bool everyContact) =>
+        (everyContact || !c.CarriesWeight) && Depth(ref c, out _) >= (everyContact ? -_slop : 0f);
 
     /// <summary>
     /// Whether something immovable is touched (else there is nothing to propagate from: a free cluster, the smash) and

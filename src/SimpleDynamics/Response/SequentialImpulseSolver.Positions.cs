@@ -95,9 +95,15 @@ public sealed partial class SequentialImpulseSolver
             return 0;
         }
 
-        float share = correction / inverseMassSum;
+        Separate(ref c, normal, correction, inverseMassA, inverseMassB);
+        return correction;
+    }
+
+    /// <summary>Pushes the contact's bodies apart along the normal by <paramref name="correction"/>, split by the inverse masses given.</summary>
+    private void Separate(ref ContactConstraint c, Vector3 normal, float correction, float inverseMassA, float inverseMassB)
+    {
+        float share = correction / (inverseMassA + inverseMassB);
         _positions[c.A] += normal * (share * inverseMassA);
         _positions[c.B] -= normal * (share * inverseMassB);
-        return correction;
     }
 }

@@ -79,7 +79,6 @@ public sealed partial class SequentialImpulseSolver
             QueueDeepContactsOf(c.B, count, deep, head, ref queued);
         }
 
-        Array.Clear(_queued, 0, count);
     }
 
     /// <summary>
@@ -104,9 +103,7 @@ public sealed partial class SequentialImpulseSolver
             return 0;
         }
 
-        float share = excess / inverseMassSum;
-        _positions[c.A] += normal * (share * inverseMassA);
-        _positions[c.B] -= normal * (share * inverseMassB);
+        Separate(ref c, normal, excess, inverseMassA, inverseMassB);
         _corrections[c.A] += inverseMassA > 0 ? 1 : 0;
         _corrections[c.B] += inverseMassB > 0 ? 1 : 0;
         return excess;
