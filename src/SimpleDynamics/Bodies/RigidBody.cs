@@ -34,6 +34,12 @@ public sealed partial class RigidBody
 
     // Fields, not auto-properties: the world's hot path reads and writes them directly.
     internal Vector3 position;
+
+    /// <summary>
+    /// The centre in double precision, which the impact pass keeps for bodies in free flight in a world without
+    /// gravity (see <see cref="PreciseCentre"/>).
+    /// </summary>
+    internal Vector3D preciseCentre;
     internal Quaternion orientation = Quaternion.Identity;
     internal Vector3 linearVelocity;
     internal Vector3 angularVelocity;
@@ -160,6 +166,13 @@ public sealed partial class RigidBody
             WakeIfAsleep();
         }
     }
+
+    /// <summary>
+    /// The centre as the impact pass last left it, in double precision, while <see cref="Position"/> is still its
+    /// rounding; otherwise (the user, a responder or the position pass moved the body since) the float position.
+    /// Whoever writes <see cref="position"/> thus replaces the precise centre without having to know of it.
+    /// </summary>
+    internal Vector3D PreciseCentre => preciseCentre.Rounded == position ? preciseCentre : new Vector3D(position);
 
     /// <summary>Centre of mass, world coordinates (m).</summary>
     public Vector3 Position

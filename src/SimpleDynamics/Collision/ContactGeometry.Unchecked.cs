@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using SimpleDynamics.Bodies;
+using SimpleDynamics.Mathematics;
 
 namespace SimpleDynamics.Collision;
 
@@ -37,6 +38,30 @@ public static partial class ContactGeometry
         /// <summary>Penetration of a circle into a plane: r − (signed distance of the centre).</summary>
         public static float PlanePenetration(Vector3 centre, float radius, Vector3 planeNormal, float planeOffset) =>
             radius - (Vector3.Dot(planeNormal, centre) - planeOffset);
+
+        /// <summary>
+        /// <see cref="CirclePenetration(Vector3, float, Vector3, float, out Vector3)"/> from centres in double precision
+        /// (<see cref="RigidBody.PreciseCentre"/>), worked out in double: the depth of a grazing pair or a near-miss a
+        /// kilometre from the origin is finer than float32 positions there can tell.
+        /// </summary>
+        public static double CirclePenetration(Vector3D centreA, double radiusA, Vector3D centreB, double radiusB, out Vector3D normal)
+        {
+            Vector3D delta = centreA - centreB;
+            double distanceSquared = delta.LengthSquared, radii = radiusA + radiusB;
+            if (distanceSquared <= 1e-12 * radii * radii)
+            {
+                normal = new Vector3D(0, 1, 0);
+                return radii;
+            }
+
+            double distance = Math.Sqrt(distanceSquared);
+            normal = delta / distance;
+            return radii - distance;
+        }
+
+        /// <summary><see cref="PlanePenetration(Vector3, float, Vector3, float)"/> from a centre in double precision, in double.</summary>
+        public static double PlanePenetration(Vector3D centre, double radius, Vector3 planeNormal, float planeOffset) =>
+            radius - (Vector3D.Dot(new Vector3D(planeNormal), centre) - planeOffset);
 
         /// <summary>
         /// True when the bounding circles of two bodies overlap (d &lt; r_A + r_B) and the pair can collide (at least

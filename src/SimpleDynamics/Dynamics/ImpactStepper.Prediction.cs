@@ -2,6 +2,7 @@ using System;
 using System.Numerics;
 using SimpleDynamics.Bodies;
 using SimpleDynamics.Collision;
+using SimpleDynamics.Mathematics;
 using SimpleDynamics.Response;
 
 namespace SimpleDynamics;
@@ -20,14 +21,20 @@ internal sealed partial class ImpactStepper
         float penetration;
         float smaller = a.radius;
         bool held = _held[a.index];
+        Vector3D startA = _substepStart[a.index];
         if (contact.IsPlaneContact)
         {
-            penetration = ContactGeometry.Unchecked.PlanePenetration(_substepStart[a.index], a.radius, contact.Normal, contact.PlaneOffset);
+            penetration = InDouble(a.index, -1)
+                ? (float)ContactGeometry.Unchecked.PlanePenetration(startA, a.radius, contact.Normal, contact.PlaneOffset)
+                : ContactGeometry.Unchecked.PlanePenetration(startA.Rounded, a.radius, contact.Normal, contact.PlaneOffset);
         }
         else
         {
             RigidBody b = contact.BodyB;
-            penetration = ContactGeometry.Unchecked.CirclePenetration(_substepStart[a.index], a.radius, _substepStart[b.index], b.radius, out _);
+            Vector3D startB = _substepStart[b.index];
+            penetration = InDouble(a.index, b.index)
+                ? (float)ContactGeometry.Unchecked.CirclePenetration(startA, a.radius, startB, b.radius, out _)
+                : ContactGeometry.Unchecked.CirclePenetration(startA.Rounded, a.radius, startB.Rounded, b.radius, out _);
             smaller = MathF.Min(smaller, b.radius);
             held |= _held[b.index];
         }
@@ -64,17 +71,35 @@ internal sealed partial class ImpactStepper
             // Along straight chords the squared distance |d + v s|² is convex in s, so a pair whose distance does not
             // fall now (d · v ≥ 0) does not fall during the rest of the substep: most contacts of a resting pile,
             // which therefore need no measuring.
-            Vector3 relative = _motion[a].Chord - _motion[b].Chord;
-            if (relative == Vector3.Zero)
-            {
-                return;
-            }
-
             double t0 = Math.Max(_motion[a].T, _motion[b].T);
-            Vector3 d = _motion[a].X + _motion[a].Chord * (float)(t0 - _motion[a].T) - (_motion[b].X + _motion[b].Chord * (float)(t0 - _motion[b].T));
-            if (Vector3.Dot(d, relative) >= 0)
+            Vector3D d, relative;
+            if (InDouble(a, b))
             {
-                return;
+                // The same in double precision: the difference of two float velocities is exact there.
+                Vector3D chordA = new(_motion[a].Chord), chordB = new(_motion[b].Chord);
+                relative = chordA - chordB;
+                d = _motion[a].PreciseX + (t0 - _motion[a].T) * chordA - (_motion[b].PreciseX + (t0 - _motion[b].T) * chordB);
+                if (relative.LengthSquared == 0 || Vector3D.Dot(d, relative) >= 0)
+                {
+                    return;
+                }
+            }
+            else
+            {
+                Vector3 relativeF = _motion[a].Chord - _motion[b].Chord;
+                if (relativeF == Vector3.Zero)
+                {
+                    return;
+                }
+
+                Vector3 dF = _motion[a].X + _motion[a].Chord * (float)(t0 - _motion[a].T) - (_motion[b].X + _motion[b].Chord * (float)(t0 - _motion[b].T));
+                if (Vector3.Dot(dF, relativeF) >= 0)
+                {
+                    return;
+                }
+
+                d = new Vector3D(dF);
+                relative = new Vector3D(relativeF);
             }
 
             time = PairImpactTime(k, a, b, t0, d, relative);
@@ -118,7 +143,7 @@ internal sealed partial class ImpactStepper
     /// reaches r_A + r_B − limit (contact <paramref name="k"/>'s depth limit) while they approach; +∞ if it does not.
     /// Solves |d + v s|² = D² for the smaller root s ≥ 0 in double precision.
     /// </summary>
-    private double PairImpactTime(int k, int a, int b, double t0, Vector3 d, Vector3 relative)
+    private double PairImpactTime(int k, int a, int b, double t0, Vector3D d, Vector3D relative)
     {
         double dx = d.X, dy = d.Y, dz = d.Z;
         double vx = relative.X, vy = relative.Y, vz = relative.Z;
@@ -192,7 +217,8 @@ internal sealed partial class ImpactStepper
             return double.PositiveInfinity;
         }
 
-        double gap = (double)Vector3.Dot(contact.Normal, _motion[a].X) - contact.PlaneOffset - contact.BodyA.radius + limit;
+        double distance = InDouble(a, -1) ? Vector3D.Dot(new Vector3D(contact.Normal), _motion[a].PreciseX) : Vector3.Dot(contact.Normal, _motion[a].X);
+        double gap = distance - contact.PlaneOffset - contact.BodyA.radius + limit;
         return gap <= 0 ? _motion[a].T : _motion[a].T + gap / -closing;
     }
 }

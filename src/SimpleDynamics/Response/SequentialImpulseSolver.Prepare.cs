@@ -216,6 +216,25 @@ public sealed partial class SequentialImpulseSolver
     }
 
     /// <summary>
+    /// A contact's depth and normal from the bodies' centres in double precision (<see cref="RigidBody.PreciseCentre"/>),
+    /// as the impact pass measures them in a world without gravity: whether a slow pair grazing by, or passing within
+    /// float rounding of touching, is a resting contact is decided from where it really is, not from its rounding.
+    /// </summary>
+    private static float MeasureInDouble(ref ContactConstraint c, in Contact contact)
+    {
+        Vector3D centreA = contact.BodyA.PreciseCentre;
+        if (c.IsPlaneContact)
+        {
+            c.Normal = contact.Normal;
+            return (float)ContactGeometry.Unchecked.PlanePenetration(centreA, c.RadiusA, c.Normal, c.PlaneOffset);
+        }
+
+        double penetration = ContactGeometry.Unchecked.CirclePenetration(centreA, c.RadiusA, contact.BodyB.PreciseCentre, c.RadiusB, out Vector3D normal);
+        c.Normal = normal.Rounded;
+        return (float)penetration;
+    }
+
+    /// <summary>
     /// Measures every contact at the start of a substep: the normal along the current line of centres (or the
     /// plane's), tangents, lever arms r = p − c (eq. 16), the spins I⁻¹ (r × t) a unit friction impulse causes (eq. 15)
     /// and the effective masses. A contact is solved here if it touches, or pushed (in the last substep or at an impact
@@ -229,6 +248,7 @@ public sealed partial class SequentialImpulseSolver
     private void MeasureConstraints(ReadOnlySpan<Contact> contacts)
     {
         float weight = 0.7f * _gravity.Length(); // see ContactConstraint.CarriesWeight (never, without gravity)
+        bool freeSpace = _gravity == Vector3.Zero;
         Buffers.EnsureCapacity(ref _active, contacts.Length);
         _activeCount = 0;
         for (int k = 0; k < contacts.Length; k++)
@@ -238,7 +258,11 @@ public sealed partial class SequentialImpulseSolver
             ref VelocityState b = ref _bodies[c.B];
             Vector3 positionA = _positions[c.A];
             float penetration;
-            if (c.IsPlaneContact)
+            if (freeSpace)
+            {
+                penetration = MeasureInDouble(ref c, contacts[k]);
+            }
+            else if (c.IsPlaneContact)
             {
                 penetration = ContactGeometry.Unchecked.PlanePenetration(positionA, c.RadiusA, c.Normal = contacts[k].Normal, c.PlaneOffset);
             }
