@@ -13,7 +13,7 @@ internal sealed partial class ImpactStepper
     /// <summary>
     /// The depth at which a pair collides this substep: 0 (touching) if it is apart at the start of the substep, else
     /// its depth then plus <see cref="DepthTolerance"/> of the smaller radius (<see cref="HeldDepthTolerance"/> if a body is held by
-    /// resting contacts).
+    /// resting contacts), but not past the depth cap (the solver's slop without gravity) unless it started deeper.
     /// </summary>
     private float DepthLimit(in Contact contact)
     {
@@ -45,7 +45,8 @@ internal sealed partial class ImpactStepper
         }
 
         // A held pair creeping slower than the tolerance per substep is the responder's; one closing faster collides now.
-        float tolerance = (held ? HeldDepthTolerance : DepthTolerance) * smaller;
+        // Never past the depth cap, though: a pair at it collides as soon as it would sink further.
+        float tolerance = MathF.Min((held ? HeldDepthTolerance : DepthTolerance) * smaller, MathF.Max(0f, _depthCap - penetration));
         Vector3 chordB = contact.IsPlaneContact ? Vector3.Zero : _startChord[contact.BodyB.index];
         float closing = -Vector3.Dot(_startChord[a.index] - chordB, contact.Normal);
         return closing * _h > tolerance ? penetration : penetration + tolerance;
