@@ -36,8 +36,8 @@ public sealed partial class RigidBody
     internal Vector3 position;
 
     /// <summary>
-    /// The centre in double precision, which the impact pass keeps for bodies in free flight in a world without
-    /// gravity (see <see cref="PreciseCentre"/>).
+    /// The centre in double precision as the impact pass left it (it moves bodies in double precision in a world
+    /// without gravity); read it through <see cref="PreciseCentre"/>.
     /// </summary>
     internal Vector3D preciseCentre;
     internal Quaternion orientation = Quaternion.Identity;
@@ -169,8 +169,9 @@ public sealed partial class RigidBody
 
     /// <summary>
     /// The centre as the impact pass last left it, in double precision, while <see cref="Position"/> is still its
-    /// rounding; otherwise (the user, a responder or the position pass moved the body since) the float position.
-    /// Whoever writes <see cref="position"/> thus replaces the precise centre without having to know of it.
+    /// rounding; otherwise (a responder or the position pass moved the body since) the float position. Whoever writes
+    /// <see cref="position"/> thus replaces the precise centre without having to know of it; the setter of
+    /// <see cref="Position"/> replaces it outright, so that setting a body where it already is puts it exactly there.
     /// </summary>
     internal Vector3D PreciseCentre => preciseCentre.Rounded == position ? preciseCentre : new Vector3D(position);
 
@@ -182,6 +183,7 @@ public sealed partial class RigidBody
         {
             Guard.Finite(value, nameof(Position));
             position = value;
+            preciseCentre = new Vector3D(value);
             WakeIfAsleep();
         }
     }

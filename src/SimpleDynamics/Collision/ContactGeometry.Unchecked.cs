@@ -59,9 +59,16 @@ public static partial class ContactGeometry
             return radii - distance;
         }
 
-        /// <summary><see cref="PlanePenetration(Vector3, float, Vector3, float)"/> from a centre in double precision, in double.</summary>
-        public static double PlanePenetration(Vector3D centre, double radius, Vector3 planeNormal, float planeOffset) =>
-            radius - (Vector3D.Dot(new Vector3D(planeNormal), centre) - planeOffset);
+        /// <summary>
+        /// <see cref="PlanePenetration(Vector3, float, Vector3, float)"/> from a centre in double precision, in double,
+        /// with the float normal made exactly unit first: its length is 1 only to about 6e-8, which a kilometre out
+        /// would move the plane by 60 µm.
+        /// </summary>
+        public static double PlanePenetration(Vector3D centre, double radius, Vector3 planeNormal, float planeOffset)
+        {
+            Vector3D normal = new(planeNormal);
+            return radius - (Vector3D.Dot(normal, centre) / normal.Length - planeOffset);
+        }
 
         /// <summary>
         /// True when the bounding circles of two bodies overlap (d &lt; r_A + r_B) and the pair can collide (at least

@@ -102,7 +102,7 @@ internal sealed partial class ImpactStepper
                 ref Contact contact = ref _contacts[k];
                 if (state == JamState.Joined)
                 {
-                    Measure(ref contact, planes);
+                    Measure(ref contact, a, b, planes);
                     bool apart = contact.Penetration < -HeldDepthTolerance * SmallerRadius(a, b);
                     _jamState[k] = apart ? JamState.Apart : JamState.Touching;
                     if (apart)

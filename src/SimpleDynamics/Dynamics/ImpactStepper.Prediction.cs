@@ -24,7 +24,7 @@ internal sealed partial class ImpactStepper
         Vector3D startA = _substepStart[a.index];
         if (contact.IsPlaneContact)
         {
-            penetration = InDouble(a.index, -1)
+            penetration = _noGravity
                 ? (float)ContactGeometry.Unchecked.PlanePenetration(startA, a.radius, contact.Normal, contact.PlaneOffset)
                 : ContactGeometry.Unchecked.PlanePenetration(startA.Rounded, a.radius, contact.Normal, contact.PlaneOffset);
         }
@@ -32,7 +32,7 @@ internal sealed partial class ImpactStepper
         {
             RigidBody b = contact.BodyB;
             Vector3D startB = _substepStart[b.index];
-            penetration = InDouble(a.index, b.index)
+            penetration = _noGravity
                 ? (float)ContactGeometry.Unchecked.CirclePenetration(startA, a.radius, startB, b.radius, out _)
                 : ContactGeometry.Unchecked.CirclePenetration(startA.Rounded, a.radius, startB.Rounded, b.radius, out _);
             smaller = MathF.Min(smaller, b.radius);
@@ -45,12 +45,20 @@ internal sealed partial class ImpactStepper
         }
 
         // A held pair creeping slower than the tolerance per substep is the responder's; one closing faster collides now.
-        // Never past the depth cap, though: a pair at it collides as soon as it would sink further.
-        float tolerance = MathF.Min((held ? HeldDepthTolerance : DepthTolerance) * smaller, MathF.Max(0f, _depthCap - penetration));
+        // Never past the depth cap when nothing but their motion presses them: a pair at it collides as soon as it would sink further.
+        float tolerance = (held ? HeldDepthTolerance : DepthTolerance) * smaller;
+        if (Unloaded(contact))
+        {
+            tolerance = MathF.Min(tolerance, MathF.Max(0f, _depthCap - penetration));
+        }
         Vector3 chordB = contact.IsPlaneContact ? Vector3.Zero : _startChord[contact.BodyB.index];
         float closing = -Vector3.Dot(_startChord[a.index] - chordB, contact.Normal);
         return closing * _h > tolerance ? penetration : penetration + tolerance;
     }
+
+    /// <summary>Whether no applied force presses the contact's bodies (see DepthCap; gravity has no cap anyway).</summary>
+    private static bool Unloaded(in Contact contact) =>
+        contact.BodyA.force == Vector3.Zero && (contact.IsPlaneContact || contact.BodyB.force == Vector3.Zero);
 
     /// <summary>Predicts the next impact of contact <paramref name="k"/> and queues it if it falls within the substep.</summary>
     private void Predict(int k)
@@ -74,9 +82,9 @@ internal sealed partial class ImpactStepper
             // which therefore need no measuring.
             double t0 = Math.Max(_motion[a].T, _motion[b].T);
             Vector3D d, relative;
-            if (InDouble(a, b))
+            if (_noGravity)
             {
-                // The same in double precision: the difference of two float velocities is exact there.
+                // The same in double precision (see Precision in ImpactStepper.cs).
                 Vector3D chordA = new(_motion[a].Chord), chordB = new(_motion[b].Chord);
                 relative = chordA - chordB;
                 d = _motion[a].PreciseX + (t0 - _motion[a].T) * chordA - (_motion[b].PreciseX + (t0 - _motion[b].T) * chordB);
@@ -218,8 +226,9 @@ internal sealed partial class ImpactStepper
             return double.PositiveInfinity;
         }
 
-        double distance = InDouble(a, -1) ? Vector3D.Dot(new Vector3D(contact.Normal), _motion[a].PreciseX) : Vector3.Dot(contact.Normal, _motion[a].X);
-        double gap = distance - contact.PlaneOffset - contact.BodyA.radius + limit;
+        double gap = limit - (_noGravity
+            ? ContactGeometry.Unchecked.PlanePenetration(_motion[a].PreciseX, contact.BodyA.radius, contact.Normal, contact.PlaneOffset)
+            : contact.BodyA.radius - ((double)Vector3.Dot(contact.Normal, _motion[a].X) - contact.PlaneOffset));
         return gap <= 0 ? _motion[a].T : _motion[a].T + gap / -closing;
     }
 }

@@ -25,7 +25,7 @@ namespace SimpleDynamics;
 /// already touching collide as soon as they approach, unless a body is held by resting contacts and the pair only
 /// creeps (it would sink less than <see cref="HeldDepthTolerance"/> of the smaller radius in the substep): then they
 /// collide only if they sink that far, so that the slow creep of a resting pile is left to the responder instead of
-/// becoming thousands of tiny impacts.</para>
+/// becoming thousands of tiny impacts. Without gravity that creep stops at the solver's slop (see DepthCap).</para>
 /// <para><b>Nothing passes through anything.</b> After the responder has answered an impact, a pair whose centres
 /// still approach is stopped along the normal (an inelastic push through both centres), whatever the responder did.
 /// A body whose path leaves the sphere that detection covered for it (it was knocked into motion faster than it
@@ -35,16 +35,14 @@ namespace SimpleDynamics;
 /// cluster is made to move as one (an inelastic push along each touching line of centres); if the whole substep
 /// needs too many, its remaining motion is dropped. Either way bodies stay where they are rather than pass through
 /// each other.</para>
-/// <para><b>Precision.</b> In a world without gravity a body in free flight (not held by resting contacts) moves in
-/// double precision: its centre from one impact to the next (and from step to step, through
-/// <see cref="RigidBody.PreciseCentre"/>), and a pair of such bodies is predicted and measured from the double
-/// centres and velocities. Float32 alone would round a centre by up to 2⁻²⁴ of its distance from the origin at every
-/// write (61 µm a kilometre out), subtract two nearly equal velocities with the rounding of the larger, and so turn
-/// a grazing normal, or a near-miss into a hit, by far more than 1e-4 of the pair's speed. Under gravity, and for
-/// bodies held by resting contacts, positions stay float: the exact motion is promised only for free flight without
-/// gravity, and gravity worlds (every pile) thus step bit for bit as they did with float32 positions (1,000-body pits
-/// compared after 300 and 400 steps). Moving every
-/// body in double also passes every test; it waits for a use (large worlds) that needs it.</para>
+/// <para><b>Precision.</b> In a world without gravity every body moves in double precision: its centre from one
+/// impact to the next, and from step to step through <see cref="RigidBody.PreciseCentre"/>; every pair is predicted
+/// and measured there from the double centres and velocities. Float32 positions are 2⁻²³ of their distance from the origin apart (61 µm a kilometre out) and each
+/// write rounds by up to half that; the float difference of two velocities carries the rounding of the larger. For a
+/// grazing hit or a near-miss either error turns the normal, or makes a miss a hit, and changes the velocities after
+/// the impact by far more than 1e-4 of the pair's speed. Under gravity positions stay float32: exact motion is promised
+/// only for free flight without gravity, and gravity worlds (every pile) step bit for bit as with float32 positions
+/// alone (1,000-body pits compared after 300 and 400 steps).</para>
 /// <para><b>Conservation.</b> The normal of an impact is the current line of centres and both impulses act at one
 /// point, so every impact conserves linear and angular momentum about any point, to float rounding.</para>
 /// </remarks>
@@ -99,6 +97,7 @@ internal sealed partial class ImpactStepper
     private double _h;
     private long _stepNumber;
     private float _depthCap = float.PositiveInfinity; // see DepthCap
+    private bool _noGravity; // pairs are predicted and measured in double precision (see Precision)
 
     /// <summary>
     /// A body's motion within the substep, kept together because the impact pass looks bodies up in the order their
@@ -106,9 +105,8 @@ internal sealed partial class ImpactStepper
     /// </summary>
     private struct Motion
     {
-        public Vector3 X; // the centre at time T, as a float
-        public Vector3D PreciseX; // the same in double precision, kept only while InDouble
-        public bool InDouble; // moves in double precision (free flight without gravity, see Precision)
+        public Vector3 X; // the centre at time T, rounded to float
+        public Vector3D PreciseX; // the centre at time T: moved in double if MovesInDouble, else exactly X
         public Vector3 Chord; // the velocity it moves with from T to the end of the substep
         public double T; // the time within the substep that X and U are at
         public int Version; // collisions so far: a prediction made before the latest one is stale
@@ -116,6 +114,7 @@ internal sealed partial class ImpactStepper
         public Vector3 U; // the velocity at T
         public Vector3 A; // the uniform acceleration of its free flight (zero if held by resting contacts)
         public int Impacts; // impacts this substep
+        public bool MovesInDouble; // a dynamic or kinematic body without gravity (see Precision)
     }
 
     /// <summary>Impacts answered in the last step.</summary>
@@ -165,8 +164,8 @@ internal sealed partial class ImpactStepper
         CollisionData contacts = step.Contacts;
         _h = h;
         _stepNumber = step.StepNumber;
-        bool freeSpace = world.Gravity == Vector3.Zero;
-        _depthCap = DepthCap(responder, freeSpace);
+        _noGravity = world.Gravity == Vector3.Zero;
+        _depthCap = DepthCap(responder, _noGravity);
         int n = bodies.Length;
         for (int i = 0; i < n; i++)
         {
@@ -174,8 +173,8 @@ internal sealed partial class ImpactStepper
             _motion[i].X = body.position;
             _motion[i].Radius = body.radius;
             _held[i] = body.linearVelocity != _forcedVelocity[i];
-            _motion[i].InDouble = freeSpace && !_held[i] && body.Type != BodyType.Static;
-            _motion[i].PreciseX = _motion[i].InDouble ? body.PreciseCentre : new Vector3D(body.position);
+            _motion[i].MovesInDouble = _noGravity && body.Type != BodyType.Static;
+            _motion[i].PreciseX = _motion[i].MovesInDouble ? body.PreciseCentre : new Vector3D(body.position);
             if (!_held[i])
             {
                 // Free flight: from v₀ to v₁ at the uniform rate of gravity and forces, along a parabola.
@@ -273,7 +272,7 @@ internal sealed partial class ImpactStepper
             if (bodies[i].Type != BodyType.Static)
             {
                 bodies[i].position = _motion[i].X;
-                bodies[i].preciseCentre = _motion[i].InDouble ? _motion[i].PreciseX : new Vector3D(_motion[i].X);
+                bodies[i].preciseCentre = _motion[i].PreciseX;
                 bodies[i].linearVelocity = _motion[i].U;
             }
         }
@@ -287,16 +286,17 @@ internal sealed partial class ImpactStepper
     }
 
     /// <summary>
-    /// The depth a held pair may creep to within a substep before it collides: without gravity, the default solver's
-    /// <see cref="SequentialImpulseSolver.Slop"/>. Nothing presses such a pair together but the bodies' own motion, and
-    /// a crowd struck hard (<see cref="Scenes.Smash"/>) otherwise crept by up to 0.1 % of a radius a substep faster
-    /// than the position pass could undo: 1,000 discs ended steps 2 mm deep, 3,000 discs 4 mm. Under gravity a deep
-    /// pile's contacts carry its weight beyond the slop until the sweeps converge, and answering their creep as impacts
-    /// jammed it (the 200-deep pour and the 2,000-disc pit no longer fell asleep): no cap there, nor for responders
-    /// that have no slop.
+    /// The depth a held pair pressed by nothing but its own motion may creep to within a substep before it collides:
+    /// without gravity, the <see cref="SequentialImpulseSolver.Slop"/> of the solver answering it. A crowd struck hard
+    /// (<see cref="Scenes.Smash"/>) creeps together by up to <see cref="HeldDepthTolerance"/> of a radius a substep,
+    /// faster than the position pass can undo (measured without the cap: 1,000 discs ended steps 2 mm deep, 3,000
+    /// discs 4 mm). A pair pressed by a load, gravity or an applied force, carries it beyond the slop until the
+    /// solver's sweeps converge, and answering that creep as impacts jams a deep pile (measured under gravity: the
+    /// 200-deep pour and the 2,000-disc pit did not fall asleep in time), so there is no cap under a load, nor for a
+    /// responder that has no slop.
     /// </summary>
-    private static float DepthCap(ICollisionResponder responder, bool freeSpace) =>
-        freeSpace && responder is SequentialImpulseSolver solver ? solver.Slop : float.PositiveInfinity;
+    private static float DepthCap(ICollisionResponder responder, bool noGravity) =>
+        noGravity && responder is SequentialImpulseSolver solver ? solver.Slop : float.PositiveInfinity;
 
     /// <summary>
     /// One impact at time <paramref name="time"/>: both bodies travel to it, the contact is measured there, the
@@ -316,15 +316,7 @@ internal sealed partial class ImpactStepper
             bodyB.linearVelocity = _motion[b].U;
         }
 
-        if (InDouble(a, b))
-        {
-            MeasureInDouble(ref contact, a, b, step.Planes);
-        }
-        else
-        {
-            Measure(ref contact, step.Planes);
-        }
-
+        Measure(ref contact, a, b, step.Planes);
         contact.ApproachVelocity = Vector3.Dot(bodyA.VelocityAt(contact.Point) - bodyB.VelocityAt(contact.Point), contact.Normal);
         bool exhausted = _motion[a].Impacts >= ImpactsPerBody || (b >= 0 && _motion[b].Impacts >= ImpactsPerBody);
         int cost = Creeping(contact, a, b) ? ImpactsPerBody / CreepingImpactsPerBody : 1;
@@ -403,8 +395,24 @@ internal sealed partial class ImpactStepper
         return true;
     }
 
-    /// <summary>Measures a contact at the bodies' current positions: normal along the line of centres, point, depth.</summary>
-    private static void Measure(ref Contact contact, ReadOnlySpan<StaticPlane> planes)
+    /// <summary>
+    /// Measures contact <paramref name="contact"/> of bodies <paramref name="a"/> and <paramref name="b"/> (a plane if
+    /// b &lt; 0) where they are now: in double precision without gravity (see Precision), else in float.
+    /// </summary>
+    private void Measure(ref Contact contact, int a, int b, ReadOnlySpan<StaticPlane> planes)
+    {
+        if (_noGravity)
+        {
+            MeasureInDouble(ref contact, a, b, planes);
+        }
+        else
+        {
+            MeasureInFloat(ref contact, planes);
+        }
+    }
+
+    /// <summary>Measures a contact at the bodies' float positions: normal along the line of centres, point, depth.</summary>
+    private static void MeasureInFloat(ref Contact contact, ReadOnlySpan<StaticPlane> planes)
     {
         RigidBody a = contact.BodyA;
         if (contact.IsPlaneContact)
@@ -422,8 +430,8 @@ internal sealed partial class ImpactStepper
     }
 
     /// <summary>
-    /// The same from the double centres of bodies that move in double precision: the normal along the line of centres
-    /// (or the plane's), the depth and the point are worked out in double and rounded once.
+    /// The same from the bodies' double centres: the normal along the line of centres (or the plane's), the depth and
+    /// the point are worked out in double and rounded once.
     /// </summary>
     private void MeasureInDouble(ref Contact contact, int a, int b, ReadOnlySpan<StaticPlane> planes)
     {
@@ -445,9 +453,6 @@ internal sealed partial class ImpactStepper
         contact.Point = (centreA - (radiusA - 0.5 * depth) * normal).Rounded;
     }
 
-    /// <summary>Whether the pair of bodies <paramref name="a"/> and <paramref name="b"/> (a plane if b &lt; 0) moves in double precision.</summary>
-    private bool InDouble(int a, int b) => _motion[a].InDouble && (b < 0 || _motion[b].InDouble);
-
     /// <summary>Moves body <paramref name="i"/> along its chord to <paramref name="time"/>; its velocity follows the parabola.</summary>
     private void Advance(RigidBody body, int i, double time)
     {
@@ -458,7 +463,7 @@ internal sealed partial class ImpactStepper
         }
 
         float s = (float)span;
-        if (_motion[i].InDouble)
+        if (_motion[i].MovesInDouble)
         {
             _motion[i].PreciseX += span * new Vector3D(_motion[i].Chord);
             _motion[i].X = _motion[i].PreciseX.Rounded;
@@ -466,6 +471,7 @@ internal sealed partial class ImpactStepper
         else
         {
             _motion[i].X += _motion[i].Chord * s;
+            _motion[i].PreciseX = new Vector3D(_motion[i].X);
         }
 
         _motion[i].U += _motion[i].A * s;

@@ -4,9 +4,9 @@ using System.Numerics;
 namespace SimpleDynamics.Mathematics;
 
 /// <summary>
-/// A point or vector in double precision: where a body in free flight is between impacts in a world without gravity
-/// (see <see cref="Bodies.RigidBody.PreciseCentre"/>). Float32 positions round by 2⁻²⁴ of their distance from the
-/// origin at every write, 61 µm a kilometre out: too coarse to tell a near-miss from a grazing hit.
+/// A point or vector in double precision: where a body is between impacts in a world without gravity
+/// (see <see cref="Bodies.RigidBody.PreciseCentre"/>). Float32 positions a kilometre from the origin are 61 µm apart:
+/// too coarse to tell a near-miss from a grazing hit.
 /// </summary>
 internal readonly struct Vector3D
 {

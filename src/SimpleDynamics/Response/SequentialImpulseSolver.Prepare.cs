@@ -248,7 +248,7 @@ public sealed partial class SequentialImpulseSolver
     private void MeasureConstraints(ReadOnlySpan<Contact> contacts)
     {
         float weight = 0.7f * _gravity.Length(); // see ContactConstraint.CarriesWeight (never, without gravity)
-        bool freeSpace = _gravity == Vector3.Zero;
+        bool noGravity = _gravity == Vector3.Zero;
         Buffers.EnsureCapacity(ref _active, contacts.Length);
         _activeCount = 0;
         for (int k = 0; k < contacts.Length; k++)
@@ -258,7 +258,7 @@ public sealed partial class SequentialImpulseSolver
             ref VelocityState b = ref _bodies[c.B];
             Vector3 positionA = _positions[c.A];
             float penetration;
-            if (freeSpace)
+            if (noGravity)
             {
                 penetration = MeasureInDouble(ref c, contacts[k]);
             }

@@ -296,9 +296,9 @@ public class ImpactTimingTests
 
     /// <summary>
     /// A crowd struck hard, without gravity (<see cref="Scenes.Smash"/>: a 100 kg disc at 20 m/s into a grid of 1 kg
-    /// discs), ends every step within the slop, measured here from the positions over every pair. The shock presses
-    /// the discs together faster than the position pass undoes, so the impact pass lets a held pair creep only up to
-    /// the slop: without that cap 1,000 discs ended steps 2 mm deep and 3,000 discs 4 mm.
+    /// discs), ends each of 40 steps through the shock within the slop, up to float rounding, measured here from the
+    /// positions over every pair. The shock presses the discs together faster than the position pass undoes, so the
+    /// impact pass lets a held pair creep only up to the slop (without that cap: 2 mm deep at 1,000 discs, 4 mm at 3,000).
     /// </summary>
     [Theory]
     [InlineData(1000)]
