@@ -51,6 +51,7 @@ internal sealed partial class ImpactStepper
         {
             tolerance = MathF.Min(tolerance, MathF.Max(0f, _depthCap - penetration));
         }
+
         Vector3 chordB = contact.IsPlaneContact ? Vector3.Zero : _startChord[contact.BodyB.index];
         float closing = -Vector3.Dot(_startChord[a.index] - chordB, contact.Normal);
         return closing * _h > tolerance ? penetration : penetration + tolerance;
