@@ -37,8 +37,9 @@ namespace SimpleDynamics;
 /// each other.</para>
 /// <para><b>Precision.</b> In a world without gravity every body moves in double precision: its centre from one
 /// impact to the next, and from step to step through <see cref="RigidBody.PreciseCentre"/>; every pair is predicted
-/// and measured there from the double centres and velocities. Float32 positions are 2⁻²³ of their distance from the origin apart (61 µm a kilometre out) and each
-/// write rounds by up to half that; the float difference of two velocities carries the rounding of the larger. For a
+/// and measured there from the double centres and velocities. Float32 positions are 2⁻²³ of their distance from the
+/// origin apart (61 µm a kilometre out) and each write rounds by up to half that; the float difference of two
+/// velocities carries the rounding of the larger. For a
 /// grazing hit or a near-miss either error turns the normal, or makes a miss a hit, and changes the velocities after
 /// the impact by far more than 1e-4 of the pair's speed. Under gravity positions stay float32: exact motion is promised
 /// only for free flight without gravity, and gravity worlds (every pile) step bit for bit as with float32 positions
@@ -97,7 +98,7 @@ internal sealed partial class ImpactStepper
     private double _h;
     private long _stepNumber;
     private float _depthCap = float.PositiveInfinity; // see DepthCap
-    private bool _noGravity; // pairs are predicted and measured in double precision (see Precision)
+    private bool _noGravity; // bodies move, and pairs are predicted and measured, in double precision (see Precision)
 
     /// <summary>
     /// A body's motion within the substep, kept together because the impact pass looks bodies up in the order their
@@ -106,7 +107,7 @@ internal sealed partial class ImpactStepper
     private struct Motion
     {
         public Vector3 X; // the centre at time T, rounded to float
-        public Vector3D PreciseX; // the centre at time T: moved in double if MovesInDouble, else exactly X
+        public Vector3D PreciseX; // the centre at time T: moved in double without gravity, else exactly X
         public Vector3 Chord; // the velocity it moves with from T to the end of the substep
         public double T; // the time within the substep that X and U are at
         public int Version; // collisions so far: a prediction made before the latest one is stale
@@ -114,7 +115,6 @@ internal sealed partial class ImpactStepper
         public Vector3 U; // the velocity at T
         public Vector3 A; // the uniform acceleration of its free flight (zero if held by resting contacts)
         public int Impacts; // impacts this substep
-        public bool MovesInDouble; // a dynamic or kinematic body without gravity (see Precision)
     }
 
     /// <summary>Impacts answered in the last step.</summary>
@@ -173,8 +173,7 @@ internal sealed partial class ImpactStepper
             _motion[i].X = body.position;
             _motion[i].Radius = body.radius;
             _held[i] = body.linearVelocity != _forcedVelocity[i];
-            _motion[i].MovesInDouble = _noGravity && body.Type != BodyType.Static;
-            _motion[i].PreciseX = _motion[i].MovesInDouble ? body.PreciseCentre : new Vector3D(body.position);
+            _motion[i].PreciseX = _noGravity ? body.PreciseCentre : new Vector3D(body.position);
             if (!_held[i])
             {
                 // Free flight: from v₀ to v₁ at the uniform rate of gravity and forces, along a parabola.
@@ -286,19 +285,6 @@ internal sealed partial class ImpactStepper
     }
 
     /// <summary>
-    /// The depth a held pair pressed by nothing but its own motion may creep to within a substep before it collides:
-    /// without gravity, the <see cref="SequentialImpulseSolver.Slop"/> of the solver answering it. A crowd struck hard
-    /// (<see cref="Scenes.Smash"/>) creeps together by up to <see cref="HeldDepthTolerance"/> of a radius a substep,
-    /// faster than the position pass can undo (measured without the cap: 1,000 discs ended steps 2 mm deep, 3,000
-    /// discs 4 mm). A pair pressed by a load, gravity or an applied force, carries it beyond the slop until the
-    /// solver's sweeps converge, and answering that creep as impacts jams a deep pile (measured under gravity: the
-    /// 200-deep pour and the 2,000-disc pit did not fall asleep in time), so there is no cap under a load, nor for a
-    /// responder that has no slop.
-    /// </summary>
-    private static float DepthCap(ICollisionResponder responder, bool noGravity) =>
-        noGravity && responder is SequentialImpulseSolver solver ? solver.Slop : float.PositiveInfinity;
-
-    /// <summary>
     /// One impact at time <paramref name="time"/>: both bodies travel to it, the contact is measured there, the
     /// responder answers it, and a pair that still approaches is stopped along the normal.
     /// </summary>
@@ -395,64 +381,6 @@ internal sealed partial class ImpactStepper
         return true;
     }
 
-    /// <summary>
-    /// Measures contact <paramref name="contact"/> of bodies <paramref name="a"/> and <paramref name="b"/> (a plane if
-    /// b &lt; 0) where they are now: in double precision without gravity (see Precision), else in float.
-    /// </summary>
-    private void Measure(ref Contact contact, int a, int b, ReadOnlySpan<StaticPlane> planes)
-    {
-        if (_noGravity)
-        {
-            MeasureInDouble(ref contact, a, b, planes);
-        }
-        else
-        {
-            MeasureInFloat(ref contact, planes);
-        }
-    }
-
-    /// <summary>Measures a contact at the bodies' float positions: normal along the line of centres, point, depth.</summary>
-    private static void MeasureInFloat(ref Contact contact, ReadOnlySpan<StaticPlane> planes)
-    {
-        RigidBody a = contact.BodyA;
-        if (contact.IsPlaneContact)
-        {
-            StaticPlane plane = planes[contact.PlaneIndex];
-            contact.Normal = plane.Normal;
-            contact.Penetration = ContactGeometry.Unchecked.PlanePenetration(a.position, a.radius, plane.Normal, plane.Offset);
-        }
-        else
-        {
-            contact.Penetration = ContactGeometry.Unchecked.CirclePenetration(a.position, a.radius, contact.BodyB.position, contact.BodyB.radius, out contact.Normal);
-        }
-
-        contact.Point = a.position - contact.Normal * (a.radius - 0.5f * contact.Penetration);
-    }
-
-    /// <summary>
-    /// The same from the bodies' double centres: the normal along the line of centres (or the plane's), the depth and
-    /// the point are worked out in double and rounded once.
-    /// </summary>
-    private void MeasureInDouble(ref Contact contact, int a, int b, ReadOnlySpan<StaticPlane> planes)
-    {
-        Vector3D centreA = _motion[a].PreciseX, normal;
-        double radiusA = _motion[a].Radius, depth;
-        if (contact.IsPlaneContact)
-        {
-            StaticPlane plane = planes[contact.PlaneIndex];
-            normal = new Vector3D(plane.Normal);
-            depth = ContactGeometry.Unchecked.PlanePenetration(centreA, radiusA, plane.Normal, plane.Offset);
-        }
-        else
-        {
-            depth = ContactGeometry.Unchecked.CirclePenetration(centreA, radiusA, _motion[b].PreciseX, _motion[b].Radius, out normal);
-        }
-
-        contact.Normal = normal.Rounded;
-        contact.Penetration = (float)depth;
-        contact.Point = (centreA - (radiusA - 0.5 * depth) * normal).Rounded;
-    }
-
     /// <summary>Moves body <paramref name="i"/> along its chord to <paramref name="time"/>; its velocity follows the parabola.</summary>
     private void Advance(RigidBody body, int i, double time)
     {
@@ -463,7 +391,7 @@ internal sealed partial class ImpactStepper
         }
 
         float s = (float)span;
-        if (_motion[i].MovesInDouble)
+        if (_noGravity)
         {
             _motion[i].PreciseX += span * new Vector3D(_motion[i].Chord);
             _motion[i].X = _motion[i].PreciseX.Rounded;

@@ -1,0 +1,68 @@
+using System;
+using SimpleDynamics.Bodies;
+using SimpleDynamics.Collision;
+using SimpleDynamics.Mathematics;
+
+namespace SimpleDynamics;
+
+// Measuring a contact where its bodies are now: in double precision without gravity (see Precision), else in float.
+internal sealed partial class ImpactStepper
+{
+    /// <summary>
+    /// Measures contact <paramref name="contact"/> of bodies <paramref name="a"/> and <paramref name="b"/> (a plane if
+    /// b &lt; 0) where they are now: in double precision without gravity (see Precision), else in float.
+    /// </summary>
+    private void Measure(ref Contact contact, int a, int b, ReadOnlySpan<StaticPlane> planes)
+    {
+        if (_noGravity)
+        {
+            MeasureInDouble(ref contact, a, b, planes);
+        }
+        else
+        {
+            MeasureInFloat(ref contact, planes);
+        }
+    }
+
+    /// <summary>Measures a contact at the bodies' float positions: normal along the line of centres, point, depth.</summary>
+    private static void MeasureInFloat(ref Contact contact, ReadOnlySpan<StaticPlane> planes)
+    {
+        RigidBody a = contact.BodyA;
+        if (contact.IsPlaneContact)
+        {
+            StaticPlane plane = planes[contact.PlaneIndex];
+            contact.Normal = plane.Normal;
+            contact.Penetration = ContactGeometry.Unchecked.PlanePenetration(a.position, a.radius, plane.Normal, plane.Offset);
+        }
+        else
+        {
+            contact.Penetration = ContactGeometry.Unchecked.CirclePenetration(a.position, a.radius, contact.BodyB.position, contact.BodyB.radius, out contact.Normal);
+        }
+
+        contact.Point = a.position - contact.Normal * (a.radius - 0.5f * contact.Penetration);
+    }
+
+    /// <summary>
+    /// The same from the bodies' double centres: the normal along the line of centres (or the plane's), the depth and
+    /// the point are worked out in double and rounded once.
+    /// </summary>
+    private void MeasureInDouble(ref Contact contact, int a, int b, ReadOnlySpan<StaticPlane> planes)
+    {
+        Vector3D centreA = _motion[a].PreciseX, normal;
+        double radiusA = _motion[a].Radius, depth;
+        if (contact.IsPlaneContact)
+        {
+            StaticPlane plane = planes[contact.PlaneIndex];
+            normal = new Vector3D(plane.Normal);
+            depth = ContactGeometry.Unchecked.PlanePenetration(centreA, radiusA, plane.Normal, plane.Offset);
+        }
+        else
+        {
+            depth = ContactGeometry.Unchecked.CirclePenetration(centreA, radiusA, _motion[b].PreciseX, _motion[b].Radius, out normal);
+        }
+
+        contact.Normal = normal.Rounded;
+        contact.Penetration = (float)depth;
+        contact.Point = (centreA - (radiusA - 0.5 * depth) * normal).Rounded;
+    }
+}
