@@ -15,28 +15,28 @@ internal sealed partial class ImpactStepper
     /// its depth then plus <see cref="DepthTolerance"/> of the smaller radius (<see cref="HeldDepthTolerance"/> if a body is held by
     /// resting contacts), but not past the depth cap (the solver's slop without gravity) unless it started deeper.
     /// </summary>
-    private float DepthLimit(in Contact contact)
+    private float DepthLimit(int k)
     {
-        RigidBody a = contact.BodyA;
+        ref Contact contact = ref _contacts[k];
+        Ends(k, out int a, out int b);
         float penetration;
-        float smaller = a.radius;
-        bool held = _held[a.index];
-        Vector3D startA = _substepStart[a.index];
-        if (contact.IsPlaneContact)
+        float smaller = _motion[a].Radius;
+        bool held = _held[a];
+        Vector3D startA = _substepStart[a];
+        if (b < 0)
         {
             penetration = _noGravity
-                ? (float)ContactGeometry.Unchecked.PlanePenetration(startA, a.radius, contact.Normal, contact.PlaneOffset)
-                : ContactGeometry.Unchecked.PlanePenetration(startA.Rounded, a.radius, contact.Normal, contact.PlaneOffset);
+                ? (float)ContactGeometry.Unchecked.PlanePenetration(startA, smaller, contact.Normal, contact.PlaneOffset)
+                : ContactGeometry.Unchecked.PlanePenetration(startA.Rounded, smaller, contact.Normal, contact.PlaneOffset);
         }
         else
         {
-            RigidBody b = contact.BodyB;
-            Vector3D startB = _substepStart[b.index];
+            Vector3D startB = _substepStart[b];
             penetration = _noGravity
-                ? (float)ContactGeometry.Unchecked.CirclePenetration(startA, a.radius, startB, b.radius, out _)
-                : ContactGeometry.Unchecked.CirclePenetration(startA.Rounded, a.radius, startB.Rounded, b.radius, out _);
-            smaller = MathF.Min(smaller, b.radius);
-            held |= _held[b.index];
+                ? (float)ContactGeometry.Unchecked.CirclePenetration(startA, smaller, startB, _motion[b].Radius, out _)
+                : ContactGeometry.Unchecked.CirclePenetration(startA.Rounded, smaller, startB.Rounded, _motion[b].Radius, out _);
+            smaller = MathF.Min(smaller, _motion[b].Radius);
+            held |= _held[b];
         }
 
         if (penetration < 0)
@@ -47,13 +47,13 @@ internal sealed partial class ImpactStepper
         // A held pair creeping slower than the tolerance per substep is the responder's; one closing faster collides now.
         // Never past the depth cap when nothing but their motion presses them: a pair at it collides as soon as it would sink further.
         float tolerance = (held ? HeldDepthTolerance : DepthTolerance) * smaller;
-        if (Unloaded(contact))
+        if (_depthCap < float.PositiveInfinity && Unloaded(contact))
         {
             tolerance = MathF.Min(tolerance, MathF.Max(0f, _depthCap - penetration));
         }
 
-        Vector3 chordB = contact.IsPlaneContact ? Vector3.Zero : _startChord[contact.BodyB.index];
-        float closing = -Vector3.Dot(_startChord[a.index] - chordB, contact.Normal);
+        Vector3 chordB = b < 0 ? Vector3.Zero : _startChord[b];
+        float closing = -Vector3.Dot(_startChord[a] - chordB, contact.Normal);
         return closing * _h > tolerance ? penetration : penetration + tolerance;
     }
 
@@ -139,7 +139,7 @@ internal sealed partial class ImpactStepper
     {
         if (float.IsNaN(_limit[k]))
         {
-            _limit[k] = DepthLimit(_contacts[k]);
+            _limit[k] = DepthLimit(k);
         }
 
         return _limit[k];

@@ -83,7 +83,7 @@ public sealed partial class SequentialImpulseSolver
         }
 
         float inverseMassSum = inverseMassA + inverseMassB;
-        if (inverseMassSum == 0)
+        if (inverseMassSum == 0 || ClearlyWithinSlop(ref c))
         {
             return 0;
         }
@@ -97,6 +97,22 @@ public sealed partial class SequentialImpulseSolver
 
         Separate(ref c, normal, correction, inverseMassA, inverseMassB);
         return correction;
+    }
+
+    /// <summary>
+    /// Whether two bodies' centres are so far apart that their depth is certainly below the slop: the squared distance
+    /// beyond (r_A + r_B − slop)² by more than float rounding could account for. Most contacts of a settled pile sit
+    /// at or just above the slop's depth, and this spares them the square root of measuring; the rest are measured.
+    /// </summary>
+    private bool ClearlyWithinSlop(ref ContactConstraint c)
+    {
+        if (c.IsPlaneContact)
+        {
+            return false;
+        }
+
+        float reach = c.RadiusA + c.RadiusB - _slop;
+        return reach > 0 && Vector3.DistanceSquared(_positions[c.A], _positions[c.B]) > reach * reach * (1f + 1e-5f);
     }
 
     /// <summary>Pushes the contact's bodies apart along the normal by <paramref name="correction"/>, split by the inverse masses given.</summary>
