@@ -166,7 +166,10 @@ public sealed partial class World
             if (body.IsDynamic)
             {
                 body.linearVelocity += (Gravity + body.force * body.inverseMass) * h;
-                body.angularVelocity += body.inverseInertiaWorld.Transform(body.torque) * h;
+                if (body.torque != Vector3.Zero)
+                {
+                    body.angularVelocity += body.inverseInertiaWorld.Transform(body.torque) * h;
+                }
             }
 
             after[i] = body.linearVelocity;

@@ -40,6 +40,36 @@ internal sealed class HeightOrder
         Buffers.ShrinkTo(ref _keys, InitialCapacity, 0);
     }
 
+    /// <summary>
+    /// Puts <paramref name="items"/> in the order <see cref="Sort"/> gave: item k becomes the item that was at
+    /// <paramref name="order"/>[k]. In place, one cycle of the permutation at a time, so each item is copied once and
+    /// no second array is needed; the order is used up (each entry is turned negative once its position is filled).
+    /// </summary>
+    public static void Apply<T>(Span<T> items, Span<int> order)
+    {
+        for (int start = 0; start < order.Length; start++)
+        {
+            if (order[start] < 0 || order[start] == start)
+            {
+                continue; // filled already, or in place
+            }
+
+            // Position j takes the item from order[j], until the cycle comes back to the start.
+            T first = items[start];
+            int j = start;
+            while (order[j] != start)
+            {
+                int from = order[j];
+                items[j] = items[from];
+                order[j] = ~from;
+                j = from;
+            }
+
+            items[j] = first;
+            order[j] = ~start;
+        }
+    }
+
     /// <summary>Fills <paramref name="order"/> with the indices 0 … n − 1 of <paramref name="heights"/>, lowest first.</summary>
     public void Sort(ReadOnlySpan<float> heights, Span<int> order)
     {

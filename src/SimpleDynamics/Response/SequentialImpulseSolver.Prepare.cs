@@ -19,7 +19,6 @@ public sealed partial class SequentialImpulseSolver
     private float[] _bodyHeights = new float[InitialCapacity];
     private float[] _radii = new float[InitialCapacity];
     private float[] _inertiaScalars = new float[InitialCapacity]; // per slot: k when the world I⁻¹ is k·1 (spheres, the ground), else NaN
-    private Contact[] _arranged = new Contact[InitialCapacity];
     private float[] _heights = new float[InitialCapacity];
     private int[] _active = new int[InitialCapacity]; // the active constraints of the substep, in sweep order (MeasureConstraints)
     private int _activeCount;
@@ -167,23 +166,15 @@ public sealed partial class SequentialImpulseSolver
     /// <summary>
     /// Puts the contacts in the order they are solved (<see cref="OrderAlongGravity"/>), so that every pass over
     /// contacts and constraints walks both arrays front to back: constraint k is contact k. Contacts already in that
-    /// order (always, without gravity) are not copied.
+    /// order (always, without gravity) are not moved.
     /// </summary>
     private void ArrangeContacts(Span<Contact> contacts)
     {
-        if (IsIdentity(_order.AsSpan(0, contacts.Length)))
+        Span<int> order = _order.AsSpan(0, contacts.Length);
+        if (!IsIdentity(order))
         {
-            return;
+            HeightOrder.Apply(contacts, order);
         }
-
-        Buffers.EnsureCapacity(ref _arranged, contacts.Length);
-        for (int k = 0; k < contacts.Length; k++)
-        {
-            _arranged[k] = contacts[_order[k]];
-        }
-
-        _arranged.AsSpan(0, contacts.Length).CopyTo(contacts);
-        Array.Clear(_arranged, 0, contacts.Length);
     }
 
     /// <summary>

@@ -15,6 +15,27 @@ namespace SimpleDynamics.Tests.Properties;
 public class HeightOrderLaws
 {
     [Fact]
+    public void Applying_the_order_in_place_puts_each_item_where_the_order_says_once() =>
+        PropertyCheck.Run(
+            from count in Gen.Choose(0, 300)
+            from heights in Gen.OneOf(Generators.UniformF(-50, 50), Gen.Elements(-1f, 0f, 2.5f)).ArrayOf(count)
+            select heights,
+            heights =>
+            {
+                var order = new int[heights.Length];
+                new HeightOrder().Sort(heights, order);
+                int[] expected = order.ToArray();
+                string[] items = Enumerable.Range(0, heights.Length).Select(i => $"item {i}").ToArray();
+
+                HeightOrder.Apply(items.AsSpan(), order);
+
+                for (int k = 0; k < items.Length; k++)
+                {
+                    Law.Holds(items[k] == $"item {expected[k]}", $"position {k} holds {items[k]}, not item {expected[k]}");
+                }
+            }, seed: 703);
+
+    [Fact]
     public void Order_is_a_stable_permutation_from_the_lowest_to_the_highest() =>
         PropertyCheck.Run(
             from count in Gen.Choose(0, 200)
