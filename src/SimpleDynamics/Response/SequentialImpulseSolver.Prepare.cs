@@ -154,12 +154,12 @@ public sealed partial class SequentialImpulseSolver
 
     /// <summary>
     /// The extra sweeps a substep may spend (see <see cref="ExtraIterations"/>): <see cref="ExtraIterations"/> for a
-    /// pile up to <see cref="DeepPileLayers"/> bodies deep, proportionally more for a deeper one. <paramref name="layers"/>
+    /// pile up to <see cref="DeepPileLayers"/> bodies deep, more with the square of the depth for a deeper one. <paramref name="layers"/>
     /// is the height the contacts span along gravity over the mean diameter of their bodies (0 without gravity).
     /// </summary>
     private int ExtraSweepsFor(float layers)
     {
-        float scale = layers > DeepPileLayers ? layers / DeepPileLayers : 1f;
+        float scale = layers > DeepPileLayers ? layers / DeepPileLayers * (layers / DeepPileLayers) : 1f;
         return scale < 64f ? (int)MathF.Ceiling(_extraIterations * scale) : 64 * _extraIterations; // NaN-free for any world
     }
 
