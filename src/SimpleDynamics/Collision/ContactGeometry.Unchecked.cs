@@ -117,19 +117,14 @@ public static partial class ContactGeometry
         /// </summary>
         public static bool TryCollide(RigidBody body, in StaticPlane plane, int planeIndex, RigidBody ground, float margin, float lookahead, out Contact contact)
         {
-            contact = default;
-            if (!body.IsDynamic)
-            {
-                return false;
-            }
-
             float penetration = PlanePenetration(body.position, body.radius, plane.Normal, plane.Offset);
-            if (-penetration >= margin + lookahead * body.linearVelocity.Length())
+            if (!body.IsDynamic || -penetration >= margin + lookahead * body.linearVelocity.Length() ||
+                !PairFilter.Allows(body, plane, planeIndex)) // filtered pairs and sensors never become contacts
             {
+                contact = default;
                 return false;
             }
 
-            if (!PairFilter.Allows(body, plane, planeIndex)) return false; // filtered pairs and sensors never become contacts
             Vector3 point = body.position - plane.Normal * (body.radius - 0.5f * penetration);
             contact = Contact.Unchecked(body, ground, point, plane.Normal, penetration) with
             {

@@ -20,31 +20,13 @@ internal sealed partial class ImpactStepper
         }
         else
         {
-            MeasureInFloat(ref contact, planes);
+            ContactGeometry.Unchecked.Refresh(ref contact);
         }
-    }
-
-    /// <summary>Measures a contact at the bodies' float positions: normal along the line of centres, point, depth.</summary>
-    private static void MeasureInFloat(ref Contact contact, ReadOnlySpan<StaticPlane> planes)
-    {
-        RigidBody a = contact.BodyA;
-        if (contact.IsPlaneContact)
-        {
-            StaticPlane plane = planes[contact.PlaneIndex];
-            contact.Normal = plane.Normal;
-            contact.Penetration = ContactGeometry.Unchecked.PlanePenetration(a.position, a.radius, plane.Normal, plane.Offset);
-        }
-        else
-        {
-            contact.Penetration = ContactGeometry.Unchecked.CirclePenetration(a.position, a.radius, contact.BodyB.position, contact.BodyB.radius, out contact.Normal);
-        }
-
-        contact.Point = a.position - contact.Normal * (a.radius - 0.5f * contact.Penetration);
     }
 
     /// <summary>
-    /// The same from the bodies' double centres: the normal along the line of centres (or the plane's), the depth and
-    /// the point are worked out in double and rounded once.
+    /// Measures a contact from the bodies' double centres: the normal along the line of centres (or the plane's), the
+    /// depth and the point are worked out in double and rounded once.
     /// </summary>
     private void MeasureInDouble(ref Contact contact, int a, int b, ReadOnlySpan<StaticPlane> planes)
     {

@@ -134,12 +134,9 @@ public sealed partial class World
                 continue;
             }
 
-            // The plane test of TryCollide, done first so that a body far from a plane fills no contact.
-            float reach = margin + dt * body.linearVelocity.Length();
             for (int p = 0; p < planes.Length; p++)
             {
-                if (-ContactGeometry.Unchecked.PlanePenetration(body.position, body.radius, planes[p].Normal, planes[p].Offset) < reach &&
-                    ContactGeometry.Unchecked.TryCollide(body, planes[p], p, Ground, margin, dt, out Contact contact))
+                if (ContactGeometry.Unchecked.TryCollide(body, planes[p], p, Ground, margin, dt, out Contact contact))
                 {
                     Collisions.Add(contact);
                 }
