@@ -130,26 +130,22 @@ public sealed partial class SequentialImpulseSolver
 
     /// <summary>
     /// Visits contacts from the bottom of a pile upwards (along gravity), so that each Gauss–Seidel sweep carries
-    /// support up through a stack instead of down through it. The heights also give the pile's depth, which sets the
-    /// step's budget of extra sweeps (see <see cref="ExtraSweepsFor"/>).
+    /// support up through a stack instead of down through it. The contacts also give the pile's depth
+    /// (<see cref="PileMeasure"/>), which sets the step's budget of extra sweeps (see <see cref="ExtraSweepsFor"/>).
     /// </summary>
     private void OrderAlongGravity(Span<Contact> contacts, Vector3 gravity)
     {
         Buffers.EnsureCapacity(ref _order, contacts.Length);
         Buffers.EnsureCapacity(ref _heights, contacts.Length);
-        float lowest = float.PositiveInfinity, highest = float.NegativeInfinity, diameters = 0;
+        var pile = new PileMeasure(gravity, _step!.TimeStep);
         for (int i = 0; i < contacts.Length; i++)
         {
-            float height = -Vector3.Dot(contacts[i].Point, gravity);
-            _heights[i] = height;
-            lowest = MathF.Min(lowest, height);
-            highest = MathF.Max(highest, height);
-            diameters += 2 * contacts[i].BodyA.radius;
+            _heights[i] = -Vector3.Dot(contacts[i].Point, gravity);
+            pile.Add(contacts[i]);
         }
 
         _heightOrder.Sort(_heights.AsSpan(0, contacts.Length), _order.AsSpan(0, contacts.Length));
-        float g = gravity.Length();
-        _extraSweeps = ExtraSweepsFor(contacts.Length == 0 || g == 0 ? 0 : (highest - lowest) / (g * diameters / contacts.Length));
+        _extraSweeps = ExtraSweepsFor(pile.Layers);
     }
 
     // The most a deep pile's budget may grow: 28 × ExtraIterations (224 sweeps at the default) covers the
@@ -160,8 +156,8 @@ public sealed partial class SequentialImpulseSolver
     /// <summary>
     /// The extra sweeps a substep may spend (see <see cref="ExtraIterations"/>): <see cref="ExtraIterations"/> for a
     /// pile up to <see cref="DeepPileLayers"/> bodies deep, more with the square of the depth for a deeper one, up to
-    /// 28 times as many. <paramref name="layers"/> is the height the contacts span along gravity over the mean
-    /// diameter of their bodies (0 without gravity).
+    /// 28 times as many. <paramref name="layers"/> is the pile's depth in bodies (<see cref="PileMeasure"/>; 0 without
+    /// gravity).
     /// </summary>
     private int ExtraSweepsFor(float layers)
     {

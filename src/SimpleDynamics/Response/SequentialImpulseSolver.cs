@@ -66,7 +66,8 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
     /// spent all of it, and 9–18 s after the pour began it stirred ever more (root-mean-square speed 4e-3 rising to
     /// 6.5e-2 m/s, 26 rising to 170 impacts a step, deepest overlap up to 3.5 mm); with 109 it came to rest at about
     /// 8 s but stirred again now and then; with 218 it lay still from 9 s (6e-6 m/s, 0.50 mm, 23–28 sweeps a step).
-    /// 8 × (126 / 24)² is 221. A settled pile converges within the fixed sweeps and spends none of them.
+    /// 8 × (126 / 24)² is 221. A settled pile converges within the fixed sweeps and spends none of them. The depth is
+    /// that of the bodies at rest (both bodies of a contact slower than g dt), not of a crowd still falling onto them.
     /// </summary>
     public const float DeepPileLayers = 24f;
 
