@@ -62,7 +62,7 @@ internal sealed class GrowthColumn : IColumn
     public int PriorityInCategory => 2;
     public bool IsNumeric => true;
     public UnitType UnitType => UnitType.Dimensionless;
-    public string Legend => "Mean time over the mean time of the same benchmark at N = 1,000 (issue 4 target for the pit: t(16k)/t(1k) ≤ 19)";
+    public string Legend => "Mean time over the mean time of the same benchmark at N = 1,000 (issue 10 target for the pits: t(16k)/t(1k) ≤ 18)";
 
     public string GetValue(Summary summary, BenchmarkCase benchmarkCase) => GetValue(summary, benchmarkCase, SummaryStyle.Default);
 

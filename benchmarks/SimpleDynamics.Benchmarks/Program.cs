@@ -100,7 +100,7 @@ public static class Program
         }
 
         Console.WriteLine();
-        Console.WriteLine("// Step time growth with N (target for the 2-D pit: t(16000)/t(1000) <= 19):");
+        Console.WriteLine("// Step time growth with N (issue 10 target for the pits: t(16000)/t(1000) <= 18):");
         lines.ForEach(Console.WriteLine);
         string results = Path.Combine(artifacts, "results");
         Directory.CreateDirectory(results);
