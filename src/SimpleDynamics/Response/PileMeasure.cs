@@ -19,7 +19,7 @@ namespace SimpleDynamics.Response;
 /// </remarks>
 internal struct PileMeasure
 {
-    private readonly Vector3 _down;
+    private readonly float _g;
     private readonly float _restingSpeedSquared;
     private float _lowest, _highest, _diameters;
     private int _count;
@@ -27,22 +27,23 @@ internal struct PileMeasure
     /// <summary>A measure with no contact yet, for a world with <paramref name="gravity"/> stepped by <paramref name="dt"/>.</summary>
     public PileMeasure(Vector3 gravity, float dt)
     {
-        float g = gravity.Length();
-        _down = g > 0 ? gravity / g : Vector3.Zero;
-        _restingSpeedSquared = g * dt * (g * dt);
+        _g = gravity.Length();
+        _restingSpeedSquared = _g * dt * (_g * dt);
         _lowest = float.PositiveInfinity;
         _highest = float.NegativeInfinity;
         _diameters = 0;
         _count = 0;
     }
 
-    /// <summary>Counts <paramref name="contact"/> in the pile if both its bodies are slower than g dt.</summary>
-    public void Add(in Contact contact)
+    /// <summary>
+    /// Counts <paramref name="contact"/> in the pile if both its bodies are slower than g dt. <paramref name="height"/>
+    /// is its point's height times g, −p · g: the key the solver orders contacts by, so it is not worked out twice.
+    /// </summary>
+    public void Add(in Contact contact, float height)
     {
         if (contact.BodyA.linearVelocity.LengthSquared() < _restingSpeedSquared &&
             contact.BodyB.linearVelocity.LengthSquared() < _restingSpeedSquared)
         {
-            float height = -Vector3.Dot(contact.Point, _down);
             _lowest = MathF.Min(_lowest, height);
             _highest = MathF.Max(_highest, height);
             _diameters += 2 * contact.BodyA.radius;
@@ -51,5 +52,5 @@ internal struct PileMeasure
     }
 
     /// <summary>The pile's depth in mean diameters (0 without gravity, or when no contact rests).</summary>
-    public readonly float Layers => _count == 0 ? 0 : (_highest - _lowest) / (_diameters / _count);
+    public readonly float Layers => _count == 0 || _g == 0 ? 0 : (_highest - _lowest) / (_g * _diameters / _count);
 }
