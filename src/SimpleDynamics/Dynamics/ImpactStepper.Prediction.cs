@@ -116,7 +116,7 @@ internal sealed partial class ImpactStepper
                 }
 
                 Vector3 dF = _motion[a].X + _motion[a].Chord * (float)(t0 - _motion[a].T) - (_motion[b].X + _motion[b].Chord * (float)(t0 - _motion[b].T));
-                if (Vector3.Dot(dF, relativeF) >= 0)
+                if (Vector3.Dot(dF, relativeF) >= 0 || RestsThroughSubstep(a, b, dF, relativeF))
                 {
                     return;
                 }
@@ -132,6 +132,29 @@ internal sealed partial class ImpactStepper
         {
             _queue.Push(time, k, _motion[a].Version, b >= 0 ? _motion[b].Version : 0);
         }
+    }
+
+    /// <summary>
+    /// Whether a resting pair certainly stays short of its depth limit for the whole substep, decided without working
+    /// the limit out: most contacts of a pile at rest that approach at all. It holds for a pair of which neither body has
+    /// collided yet in the substep (so <paramref name="d"/>, the centres' offset now, is the one at the substep's start,
+    /// and both move along their first chords), a body of which is held by resting contacts, that is deeper than
+    /// <see cref="HeldDepthTolerance"/> of the smaller radius, and whose relative chord <paramref name="relative"/> moves
+    /// the centres by less than half that tolerance in the substep. Its limit is then its depth plus the tolerance (see
+    /// DepthLimit), and its depth grows by no more than the centres move. Under gravity only: without it the pair is
+    /// measured in double precision and its limit may be capped (see DepthCap).
+    /// </summary>
+    private bool RestsThroughSubstep(int a, int b, Vector3 d, Vector3 relative)
+    {
+        if (_motion[a].Version != 0 || _motion[b].Version != 0 || !(_held[a] || _held[b]))
+        {
+            return false;
+        }
+
+        float tolerance = HeldDepthTolerance * MathF.Min(_motion[a].Radius, _motion[b].Radius);
+        float travel = (float)_h * (float)_h * relative.LengthSquared();
+        float deepEnough = _motion[a].Radius + _motion[b].Radius - tolerance;
+        return travel < 0.25f * tolerance * tolerance && deepEnough > 0 && d.LengthSquared() < deepEnough * deepEnough;
     }
 
     /// <summary>Contact k's depth limit, worked out from the substep's start the first time the pair closes.</summary>
