@@ -151,7 +151,7 @@ internal sealed partial class ImpactStepper
             return false;
         }
 
-        float tolerance = HeldDepthTolerance * MathF.Min(_motion[a].Radius, _motion[b].Radius);
+        float tolerance = HeldDepthTolerance * SmallerRadius(a, b);
         float travel = (float)_h * (float)_h * relative.LengthSquared();
         float deepEnough = _motion[a].Radius + _motion[b].Radius - tolerance;
         return travel < 0.25f * tolerance * tolerance && deepEnough > 0 && d.LengthSquared() < deepEnough * deepEnough;
