@@ -34,18 +34,19 @@ internal static class Warm
         float top = world.Bodies.Max(b => b.Position.Y);
         float g = MathF.Max(world.Gravity.Length(), 1e-3f);
         int steps = (int)MathF.Ceiling((MathF.Sqrt(2 * top / g) + 2f) / Dt);
+        var solver = world.Responder as SequentialImpulseSolver;
         int step = 0, sweeps = 0;
         while (step < MaxSteps)
         {
             world.Step(Dt);
             step++;
-            sweeps += world.Responder is SequentialImpulseSolver solver ? solver.SweepsThisStep : 0;
+            sweeps += solver?.SweepsThisStep ?? 0;
             if (step % 60 != 0)
             {
                 continue;
             }
 
-            if (step >= steps && RmsSpeed(world) < SettledSpeed && Converged(world, sweeps / 60.0))
+            if (step >= steps && RmsSpeed(world) < SettledSpeed && Converged(solver, world.Substeps, sweeps / 60.0))
             {
                 break;
             }
@@ -62,9 +63,8 @@ internal static class Warm
     /// resistance goes on spending one or two a step; a solver with no extra sweeps, or another responder, always
     /// counts as converged.)
     /// </summary>
-    private static bool Converged(World world, double sweepsPerStep) =>
-        world.Responder is not SequentialImpulseSolver solver
-        || sweepsPerStep <= (solver.VelocityIterations + 1) * world.Substeps;
+    private static bool Converged(SequentialImpulseSolver? solver, int substeps, double sweepsPerStep) =>
+        solver is null || sweepsPerStep <= (solver.VelocityIterations + 1) * substeps;
 
     /// <summary>√(2 KE / Σm): the root-mean-square speed of the bodies (translation and spin together).</summary>
     public static double RmsSpeed(World world) =>
