@@ -35,9 +35,10 @@ public sealed class SortAndSweepDetector : ICollisionDetector
         for (int i = 0; i < n; i++)
         {
             RigidBody body = bodies[i];
-            // The same reach the exact test allows: radius, half the margin, and the distance travelled in the lookahead.
-            float r = body.Radius + 0.5f * margin + lookahead * body.LinearVelocity.Length();
-            System.Numerics.Vector3 c = body.Position;
+            // The same sphere the exact test uses: around the middle of the path over the lookahead, of the radius, half
+            // the margin and half the distance travelled.
+            float r = body.Radius + 0.5f * margin + 0.5f * lookahead * body.LinearVelocity.Length();
+            System.Numerics.Vector3 c = body.Position + body.LinearVelocity * (0.5f * lookahead);
             // Grown by a rounding allowance: pairs that touch to within float rounding must still reach the exact test.
             r += 1e-6f * (MathF.Abs(c.X) + MathF.Abs(c.Y) + MathF.Abs(c.Z) + r);
             _keys[i] = c.X - r;

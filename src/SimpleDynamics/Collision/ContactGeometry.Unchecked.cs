@@ -76,15 +76,7 @@ public static partial class ContactGeometry
         /// </summary>
         public static bool TryCollide(RigidBody a, RigidBody b, out Contact contact) => TryCollide(a, b, 0f, 0f, out contact);
 
-        /// <summary>
-        /// True when the pair can collide (at least one body is dynamic) and may touch within
-        /// <paramref name="lookahead"/> seconds: the gap between their circles is less than <paramref name="margin"/>
-        /// plus the distance both can travel at their speeds, (|v_A| + |v_B|) × lookahead. Each body then stays within a
-        /// sphere of radius r + margin / 2 + |v| × lookahead around where it starts, and two bodies whose spheres do not
-        /// overlap cannot meet (the world looks a body up again if a collision sends it further). With margin and
-        /// lookahead 0 this is the overlap test d &lt; r_A + r_B. A reported pair with a gap has a negative
-        /// <see cref="Contact.Penetration"/>.
-        /// </summary>
+        /// <summary>The pair test of <see cref="ContactGeometry.TryCollide(RigidBody, RigidBody, float, float, out Contact)"/>, unchecked.</summary>
         public static bool TryCollide(RigidBody a, RigidBody b, float margin, float lookahead, out Contact contact) =>
             TryCollide(a, b, a.linearVelocity.Length(), b.linearVelocity.Length(), margin, lookahead, out contact);
 
@@ -97,8 +89,11 @@ public static partial class ContactGeometry
                 return false; // two infinite masses: nothing to resolve
             }
 
-            float reach = a.radius + b.radius + margin + lookahead * (speedA + speedB);
-            if (Vector3.DistanceSquared(a.position, b.position) >= reach * reach)
+            // The spheres around the middles of both paths (see ContactGeometry.TryCollide).
+            float half = 0.5f * lookahead;
+            float reach = a.radius + b.radius + margin + half * (speedA + speedB);
+            Vector3 middles = a.position - b.position + (a.linearVelocity - b.linearVelocity) * half;
+            if (middles.LengthSquared() >= reach * reach)
             {
                 return false;
             }
@@ -111,14 +106,14 @@ public static partial class ContactGeometry
             return true;
         }
 
-        /// <summary>
-        /// True when a dynamic body's circle reaches into a plane, or comes within <paramref name="margin"/> plus
-        /// the distance it can travel in <paramref name="lookahead"/> seconds; fills the contact (B = ground).
-        /// </summary>
+        /// <summary>The plane test of <see cref="ContactGeometry.TryCollide(RigidBody, in StaticPlane, int, RigidBody, float, float, out Contact)"/>, unchecked.</summary>
         public static bool TryCollide(RigidBody body, in StaticPlane plane, int planeIndex, RigidBody ground, float margin, float lookahead, out Contact contact)
         {
             float penetration = PlanePenetration(body.position, body.radius, plane.Normal, plane.Offset);
-            if (!body.IsDynamic || -penetration >= margin + lookahead * body.linearVelocity.Length() ||
+            float half = 0.5f * lookahead;
+            Vector3 middle = body.position + body.linearVelocity * half; // the middle of its path, as for a pair
+            bool apartThroughout = penetration < 0 && -PlanePenetration(middle, body.radius, plane.Normal, plane.Offset) >= margin + half * body.linearVelocity.Length();
+            if (!body.IsDynamic || apartThroughout ||
                 !PairFilter.Allows(body, plane, planeIndex)) // filtered pairs and sensors never become contacts
             {
                 contact = default;

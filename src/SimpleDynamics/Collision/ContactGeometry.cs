@@ -50,12 +50,15 @@ public static partial class ContactGeometry
 
     /// <summary>
     /// True when the pair can collide (at least one body is dynamic) and may touch within
-    /// <paramref name="lookahead"/> seconds: the gap between their circles is less than <paramref name="margin"/>
-    /// plus the distance both can travel at their speeds, (|v_A| + |v_B|) × lookahead. Each body then stays within a
-    /// sphere of radius r + margin / 2 + |v| × lookahead around where it starts, and two bodies whose spheres do not
-    /// overlap cannot meet (the world looks a body up again if a collision sends it further). With margin and
+    /// <paramref name="lookahead"/> seconds. Each body's straight path over the lookahead, from x to x + v × lookahead,
+    /// is wrapped in the smallest sphere that holds it and half the margin around it: centred at the middle of the
+    /// path, x + v × lookahead / 2, of radius r + margin / 2 + |v| × lookahead / 2. The pair is accepted when the two
+    /// spheres overlap; two bodies that stay in their spheres and whose spheres do not overlap cannot meet (the world
+    /// looks a body up again if a collision sends it out of its sphere). Centring the sphere on the middle of the path
+    /// rather than its start halves the part of its radius that grows with speed: a crowd falling together at 20 m/s
+    /// no longer reports, as contacts, neighbours several diameters away that never approach it. With margin and
     /// lookahead 0 this is the overlap test d &lt; r_A + r_B. A reported pair with a gap has a negative
-    /// <see cref="Contact.Penetration"/>.
+    /// <see cref="Contact.Penetration"/>, measured where the bodies are now.
     /// </summary>
     /// <exception cref="ArgumentNullException"><paramref name="a"/> or <paramref name="b"/> is null.</exception>
     /// <exception cref="ArgumentOutOfRangeException"><paramref name="margin"/> or <paramref name="lookahead"/> is negative or not finite.</exception>
@@ -69,8 +72,9 @@ public static partial class ContactGeometry
     }
 
     /// <summary>
-    /// True when a dynamic body's circle reaches into a plane, or comes within <paramref name="margin"/> plus
-    /// the distance it can travel in <paramref name="lookahead"/> seconds; fills the contact (B = ground).
+    /// True when a dynamic body's circle reaches into a plane, or its sphere (see the pair overload: centred at the
+    /// middle of its path over <paramref name="lookahead"/> seconds) comes within <paramref name="margin"/> plus half
+    /// its path's length of it; fills the contact (B = ground).
     /// </summary>
     /// <exception cref="ArgumentNullException"><paramref name="body"/> or <paramref name="ground"/> is null.</exception>
     /// <exception cref="ArgumentException"><paramref name="plane"/> is uninitialised (<c>default</c>).</exception>

@@ -13,8 +13,8 @@ public interface ICollisionDetector
     /// Adds to <paramref name="collisions"/> one contact per pair of <paramref name="bodies"/> that
     /// <see cref="ContactGeometry.TryCollide(RigidBody, RigidBody, float, float, out Contact)"/> accepts: with
     /// <paramref name="margin"/> (m) and <paramref name="lookahead"/> (s) both 0 (the defaults), exactly the
-    /// overlapping pairs; otherwise also those whose gap is less than the margin plus what they close within
-    /// the lookahead.
+    /// overlapping pairs; otherwise also those whose spheres around the middles of their paths over the lookahead
+    /// overlap (see that method). A detector may report more pairs than that, never fewer.
     /// </summary>
     void FindContacts(ReadOnlySpan<RigidBody> bodies, CollisionData collisions, float margin = 0f, float lookahead = 0f);
 }

@@ -86,7 +86,7 @@ internal sealed partial class ImpactStepper
     /// </summary>
     public void ShrinkIfIdle(int bodies, int contacts)
     {
-        int room = _bodyRoom.Observe(bodies, _stepStart.Length, InitialBodies);
+        int room = _bodyRoom.Observe(bodies, _sphereCentre.Length, InitialBodies);
         if (room > 0)
         {
             ShrinkBodies(room);
@@ -111,7 +111,7 @@ internal sealed partial class ImpactStepper
 
     private void EnsureBodies(int n)
     {
-        Buffers.EnsureCapacity(ref _stepStart, n);
+        Buffers.EnsureCapacity(ref _sphereCentre, n);
         Buffers.EnsureCapacity(ref _reach, n);
         Buffers.EnsureCapacity(ref _startVelocity, n);
         Buffers.EnsureCapacity(ref _forcedVelocity, n);
@@ -134,7 +134,7 @@ internal sealed partial class ImpactStepper
 
     private void ShrinkBodies(int capacity)
     {
-        Buffers.ShrinkTo(ref _stepStart, capacity, 0);
+        Buffers.ShrinkTo(ref _sphereCentre, capacity, 0);
         Buffers.ShrinkTo(ref _reach, capacity, 0);
         Buffers.ShrinkTo(ref _startVelocity, capacity, 0);
         Buffers.ShrinkTo(ref _forcedVelocity, capacity, 0);

@@ -13,7 +13,7 @@ internal sealed partial class ImpactStepper
     private bool LeavesReach(int i)
     {
         Vector3 end = _motion[i].X + _motion[i].Chord * (float)(_h - _motion[i].T);
-        return Vector3.DistanceSquared(end, _stepStart[i]) > _reach[i] * _reach[i];
+        return Vector3.DistanceSquared(end, _sphereCentre[i]) > _reach[i] * _reach[i];
     }
 
     /// <summary>
@@ -28,15 +28,15 @@ internal sealed partial class ImpactStepper
         RigidBody body = bodies[i];
         Vector3 end = _motion[i].X + _motion[i].Chord * (float)(_h - _motion[i].T);
         float speed = MathF.Max(_motion[i].Chord.Length(), (_motion[i].U + _motion[i].A * (float)(_h - _motion[i].T)).Length());
-        _reach[i] = MathF.Max(2 * _reach[i], Vector3.Distance(end, _stepStart[i]) + speed * stepTimeLeft);
+        _reach[i] = MathF.Max(2 * _reach[i], Vector3.Distance(end, _sphereCentre[i]) + speed * stepTimeLeft);
         EnsureLinked();
-        Vector3 start = _stepStart[i];
+        Vector3 start = _sphereCentre[i];
         float ownReach = body.radius + _reach[i];
         for (int j = 0; j < bodies.Length; j++)
         {
             // The spheres first, from the pass's own arrays: most bodies are far, and are rejected without being read.
             float reach = ownReach + _motion[j].Radius + _reach[j];
-            if (j == i || Vector3.DistanceSquared(start, _stepStart[j]) >= reach * reach)
+            if (j == i || Vector3.DistanceSquared(start, _sphereCentre[j]) >= reach * reach)
             {
                 continue;
             }
@@ -65,7 +65,7 @@ internal sealed partial class ImpactStepper
         ReadOnlySpan<StaticPlane> planes = step.Planes;
         for (int p = 0; p < planes.Length; p++)
         {
-            if (planes[p].DistanceTo(_stepStart[i]) - body.radius < _reach[i] &&
+            if (planes[p].DistanceTo(_sphereCentre[i]) - body.radius < _reach[i] &&
                 !HasContactWithPlane(i, p) &&
                 ContactGeometry.Unchecked.TryCollide(body, planes[p], p, step.World.Ground, float.PositiveInfinity, 0f, out Contact contact))
             {

@@ -74,7 +74,7 @@ internal sealed partial class ImpactStepper
     private const double ClosingTolerance = 1e-5;
 
     // Per body (ImpactStepper.Buffers.cs sizes them).
-    private Vector3[] _stepStart = new Vector3[InitialBodies];
+    private Vector3[] _sphereCentre = new Vector3[InitialBodies]; // the middle of the body's path over the step, as detection saw it
     private float[] _reach = new float[InitialBodies];
     private Vector3[] _startVelocity = new Vector3[InitialBodies];
     private Vector3[] _forcedVelocity = new Vector3[InitialBodies];
@@ -127,8 +127,9 @@ internal sealed partial class ImpactStepper
     public int Searches { get; private set; }
 
     /// <summary>
-    /// Remembers where each body starts the step and how far detection looked around it: a sphere of radius
-    /// <c>margin / 2 + lookahead · |v|</c> beyond its own radius (the detector's pair test is that two such spheres overlap).
+    /// Remembers the sphere detection looked in for each body: centred at the middle of its straight path over the step,
+    /// x + v · lookahead / 2, and reaching <c>margin / 2 + lookahead · |v| / 2</c> beyond its own radius (the detector's
+    /// pair test is that two such spheres overlap: see ContactGeometry.TryCollide).
     /// </summary>
     public void BeginStep(ReadOnlySpan<RigidBody> bodies, float margin, float lookahead)
     {
@@ -137,8 +138,8 @@ internal sealed partial class ImpactStepper
         for (int i = 0; i < n; i++)
         {
             RigidBody body = bodies[i];
-            _stepStart[i] = body.position;
-            _reach[i] = 0.5f * margin + lookahead * body.linearVelocity.Length();
+            _sphereCentre[i] = body.position + body.linearVelocity * (0.5f * lookahead);
+            _reach[i] = 0.5f * margin + 0.5f * lookahead * body.linearVelocity.Length();
         }
 
         ImpactCount = 0;

@@ -117,8 +117,9 @@ public sealed partial class World
 
     /// <summary>
     /// Finds the contacts of the step: every pair and every body–plane pair that may touch within dt. Each body is
-    /// given a sphere of its radius plus half the margin plus the distance it can travel: |v| dt, and ½ |g| dt² that
-    /// gravity adds (so a ball at rest with a long step is still caught by the ground).
+    /// given the sphere around the middle of its straight path over the step, x + v dt / 2, of its radius plus half
+    /// its path's length |v| dt / 2 plus half the margin, which holds the ½ |g| dt² that gravity bends the path by (so
+    /// a ball at rest with a long step is still caught by the ground); see ContactGeometry.TryCollide.
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining)] // inlined into Step, it left the JIT no budget to inline the vector maths
     private void DetectCollisions(float dt)

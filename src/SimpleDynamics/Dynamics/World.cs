@@ -102,7 +102,8 @@ public sealed partial class World
 
     /// <summary>
     /// Detection also reports pairs not yet touching whose gap is smaller than this margin (m, ≥ 0, default
-    /// 0.01) plus the distance they can travel during the step at their present speeds: speculative contacts,
+    /// 0.01) plus what they may close during the step at their present velocities (precisely: whose spheres around
+    /// the middles of their paths overlap, see <see cref="ContactGeometry.TryCollide(RigidBody, RigidBody, float, float, out Contact)"/>): speculative contacts,
     /// with negative <see cref="Contact.Penetration"/>. The solver lets such bodies close the gap within a
     /// substep but not overlap, so a contact that begins during a step is caught in the substep where it
     /// begins, not a whole step late and deep. The margin covers what gravity adds during the step.
