@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using SimpleDynamics.Bodies;
 using SimpleDynamics.Mathematics;
 
@@ -83,27 +84,40 @@ public static partial class ContactGeometry
         /// <summary>The same, given the bodies' speeds |v_A| and |v_B| (detection works them out once per body, not per pair).</summary>
         public static bool TryCollide(RigidBody a, RigidBody b, float speedA, float speedB, float margin, float lookahead, out Contact contact)
         {
-            contact = default;
-            if (!a.IsDynamic && !b.IsDynamic)
+            // Most pairs a broad phase offers are rejected here, before the contact is built or even cleared.
+            if ((!a.IsDynamic && !b.IsDynamic) || !MayMeet(a, b, speedA, speedB, margin, lookahead))
             {
-                return false; // two infinite masses: nothing to resolve
-            }
-
-            // The spheres around the middles of both paths (see ContactGeometry.TryCollide).
-            float half = 0.5f * lookahead;
-            float reach = a.radius + b.radius + margin + half * (speedA + speedB);
-            Vector3 middles = a.position - b.position + (a.linearVelocity - b.linearVelocity) * half;
-            if (middles.LengthSquared() >= reach * reach)
-            {
+                contact = default; // two infinite masses (nothing to resolve), or too far apart
                 return false;
             }
 
-            if (!PairFilter.Allows(a, b)) return false; // filtered pairs and sensors never become contacts
+            return TryMeasure(a, b, out contact);
+        }
+
+        /// <summary>Builds the contact of a pair that may meet, unless it is filtered out or a sensor (never a contact).</summary>
+        private static bool TryMeasure(RigidBody a, RigidBody b, out Contact contact)
+        {
+            if (!PairFilter.Allows(a, b))
+            {
+                contact = default;
+                return false;
+            }
+
             float penetration = CirclePenetration(a.position, a.radius, b.position, b.radius, out Vector3 normal);
 
             Vector3 point = a.position - normal * (a.radius - 0.5f * penetration);
             contact = Contact.Unchecked(a, b, point, normal, penetration);
             return true;
+        }
+
+        /// <summary>Whether the spheres around the middles of both paths overlap (see ContactGeometry.TryCollide).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] // the broad phase's innermost test, most often false
+        private static bool MayMeet(RigidBody a, RigidBody b, float speedA, float speedB, float margin, float lookahead)
+        {
+            float half = 0.5f * lookahead;
+            float reach = a.radius + b.radius + margin + half * (speedA + speedB);
+            Vector3 middles = a.position - b.position + (a.linearVelocity - b.linearVelocity) * half;
+            return middles.LengthSquared() < reach * reach;
         }
 
         /// <summary>The plane test of <see cref="ContactGeometry.TryCollide(RigidBody, in StaticPlane, int, RigidBody, float, float, out Contact)"/>, unchecked.</summary>
