@@ -26,31 +26,22 @@ public class LookaheadDetectionLaws
 
     private sealed record Scene(Body[] Bodies, float Margin, float Lookahead);
 
-    private static Gen<float> Between(double low, double high) =>
-        Gen.Choose(0, 1_000_000).Select(k => (float)(low + (high - low) * k / 1_000_000.0));
-
-    private static Gen<Vector3> Vectors(double extent) =>
-        from x in Between(-extent, extent)
-        from y in Between(-extent, extent)
-        from z in Between(-extent, extent)
-        select new Vector3(x, y, z);
-
     /// <summary>
     /// Scenes of 2–24 bodies in a 4 m box, half of them moving with one shared velocity (a crowd) plus a little of
     /// their own, the rest at any velocity up to 30 m/s; margins up to 5 cm, lookaheads up to 1/30 s.
     /// </summary>
     private static Gen<Scene> Scenes { get; } =
         from count in Gen.Choose(2, 24)
-        from crowd in Vectors(20)
+        from crowd in Generators.Vector(20)
         from bodies in Gen.ListOf(
-            from position in Vectors(2)
-            from radius in Between(0.02, 0.5)
-            from own in Vectors(30)
-            from jitter in Vectors(0.5)
+            from position in Generators.Vector(2)
+            from radius in Generators.UniformF(0.02, 0.5)
+            from own in Generators.Vector(30)
+            from jitter in Generators.Vector(0.5)
             from inCrowd in Gen.Elements(true, false)
             select new Body(position, inCrowd ? crowd + jitter : own, radius), count)
-        from margin in Between(0, 0.05)
-        from lookahead in Between(0, 1.0 / 30)
+        from margin in Generators.UniformF(0, 0.05)
+        from lookahead in Generators.UniformF(0, 1.0 / 30)
         select new Scene(bodies.ToArray(), margin, lookahead);
 
     [Fact]
