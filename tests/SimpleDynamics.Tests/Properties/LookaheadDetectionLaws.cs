@@ -27,8 +27,9 @@ public class LookaheadDetectionLaws
     private sealed record Scene(Body[] Bodies, float Margin, float Lookahead);
 
     /// <summary>
-    /// Scenes of 2–24 bodies in a 4 m box, half of them moving with one shared velocity (a crowd) plus a little of
-    /// their own, the rest at any velocity up to 30 m/s; margins up to 5 cm, lookaheads up to 1/30 s.
+    /// Scenes of 2–24 bodies in a 4 m box, about half of them moving with one shared velocity (a crowd, each component
+    /// up to 20 m/s) plus up to 0.5 m/s of their own, the rest with any velocity (each component up to 30 m/s); margins
+    /// up to 5 cm, lookaheads up to 1/30 s.
     /// </summary>
     private static Gen<Scene> Scenes { get; } =
         from count in Gen.Choose(2, 24)
