@@ -110,13 +110,19 @@ public static partial class ContactGeometry
             return true;
         }
 
+        /// <summary>
+        /// The middle of a body's straight path over <paramref name="lookahead"/> seconds, x + v × lookahead / 2: the
+        /// centre of the sphere detection gives it (see ContactGeometry.TryCollide).
+        /// </summary>
+        internal static Vector3 PathMiddle(RigidBody body, float lookahead) => body.position + body.linearVelocity * (0.5f * lookahead);
+
         /// <summary>Whether the spheres around the middles of both paths overlap (see ContactGeometry.TryCollide).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)] // the broad phase's innermost test, most often false
         private static bool MayMeet(RigidBody a, RigidBody b, float speedA, float speedB, float margin, float lookahead)
         {
             float half = 0.5f * lookahead;
             float reach = a.radius + b.radius + margin + half * (speedA + speedB);
-            Vector3 middles = a.position - b.position + (a.linearVelocity - b.linearVelocity) * half;
+            Vector3 middles = PathMiddle(a, lookahead) - PathMiddle(b, lookahead);
             return middles.LengthSquared() < reach * reach;
         }
 
@@ -124,9 +130,8 @@ public static partial class ContactGeometry
         public static bool TryCollide(RigidBody body, in StaticPlane plane, int planeIndex, RigidBody ground, float margin, float lookahead, out Contact contact)
         {
             float penetration = PlanePenetration(body.position, body.radius, plane.Normal, plane.Offset);
-            float half = 0.5f * lookahead;
-            Vector3 middle = body.position + body.linearVelocity * half; // the middle of its path, as for a pair
-            bool apartThroughout = penetration < 0 && -PlanePenetration(middle, body.radius, plane.Normal, plane.Offset) >= margin + half * body.linearVelocity.Length();
+            Vector3 middle = PathMiddle(body, lookahead); // its sphere's centre, as for a pair
+            bool apartThroughout = penetration < 0 && -PlanePenetration(middle, body.radius, plane.Normal, plane.Offset) >= margin + 0.5f * lookahead * body.linearVelocity.Length();
             if (!body.IsDynamic || apartThroughout ||
                 !PairFilter.Allows(body, plane, planeIndex)) // filtered pairs and sensors never become contacts
             {

@@ -116,7 +116,7 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
             float speed = body.linearVelocity.Length();
             float reach = body.radius + halfMargin + 0.5f * lookahead * speed;
             // Grown by a rounding allowance, so that pairs that touch to within float rounding share a cell.
-            Vector3 c = body.position + body.linearVelocity * (0.5f * lookahead);
+            Vector3 c = ContactGeometry.Unchecked.PathMiddle(body, lookahead);
             reach += 1e-6f * (MathF.Abs(c.X) + MathF.Abs(c.Y) + MathF.Abs(c.Z) + reach);
             _bounds[i] = new Bounds { Centre = c, Radius = reach, Speed = speed };
             radiusSum += reach;

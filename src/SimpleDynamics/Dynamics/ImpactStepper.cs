@@ -138,7 +138,7 @@ internal sealed partial class ImpactStepper
         for (int i = 0; i < n; i++)
         {
             RigidBody body = bodies[i];
-            _sphereCentre[i] = body.position + body.linearVelocity * (0.5f * lookahead);
+            _sphereCentre[i] = ContactGeometry.Unchecked.PathMiddle(body, lookahead);
             _reach[i] = 0.5f * margin + 0.5f * lookahead * body.linearVelocity.Length();
         }
 
