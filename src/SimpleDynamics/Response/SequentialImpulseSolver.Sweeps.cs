@@ -32,14 +32,34 @@ public sealed partial class SequentialImpulseSolver
     internal int SweepsThisStep { get; private set; }
 
     /// <summary>
+    /// How far within the convergence tolerance the first sweep must stay for the pile to count as already solved by
+    /// the warm start (see <see cref="Sweeps"/>). Measured on settled 2-D pits (two pours each of 8,000 discs, one of
+    /// 1,000 and 4,000): with a quarter, the settled steps took 15 % (1,000 discs), 8 % (4,000) and 5–8 % (8,000)
+    /// less time at the same overlap (0.50 mm); with the tolerance itself, the 8,000-disc pile that had settled
+    /// began to stir again (90 sweeps a step, root-mean-square speed up from 3e-6 to 2e-4 m/s), because a substep
+    /// ended after one sweep each time left what it had not solved to accumulate.
+    /// </summary>
+    private const float SolvedFraction = 0.25f;
+
+    /// <summary>
     /// <see cref="VelocityIterations"/> Gauss–Seidel sweeps over every contact, bottom-up, then up to
-    /// <see cref="ExtraIterations"/> more while the last one has not converged.
+    /// <see cref="ExtraIterations"/> more while the last one has not converged; only one when the first finds the
+    /// contacts already solved.
     /// </summary>
     private void Sweeps()
     {
-        // Only the last fixed sweep's convergence decides whether extra ones follow; the others need no measuring.
-        bool converged = false;
-        for (int iteration = 0; iteration < _velocityIterations; iteration++)
+        // A pile that the warm start has solved shows it in the first sweep, which then changes no contact's normal
+        // velocity by more than a fraction of the tolerance: the other sweeps are left out (a settled pile spends one
+        // sweep a substep). Otherwise only the last fixed sweep's convergence decides whether extra ones follow; those
+        // between need no measuring.
+        float change = Sweep();
+        if (change <= SolvedFraction * _convergenceTolerance)
+        {
+            return;
+        }
+
+        bool converged = _velocityIterations == 1 && change <= _convergenceTolerance;
+        for (int iteration = 1; iteration < _velocityIterations; iteration++)
         {
             if (iteration < _velocityIterations - 1 || _extraSweeps == 0)
             {
@@ -47,14 +67,14 @@ public sealed partial class SequentialImpulseSolver
             }
             else
             {
-                converged = Sweep();
+                converged = Sweep() <= _convergenceTolerance;
             }
         }
 
-        // Further sweeps only while the last one has not converged (a settled pile needs none).
+        // Further sweeps only while the last one has not converged.
         for (int extra = 0; extra < _extraSweeps && !converged; extra++)
         {
-            converged = Sweep();
+            converged = Sweep() <= _convergenceTolerance;
         }
     }
 
@@ -69,8 +89,8 @@ public sealed partial class SequentialImpulseSolver
     }
 
     /// <summary>
-    /// One Gauss–Seidel sweep over every contact, bottom-up. Returns whether it converged (see
-    /// <see cref="ConvergenceTolerance"/>).
+    /// One Gauss–Seidel sweep over every contact, bottom-up. Returns its largest change on the scale that
+    /// <see cref="ConvergenceTolerance"/> is a fraction of: the sweep has converged when this is at most the tolerance.
     /// </summary>
     /// <remarks>
     /// Under gravity the measure is the largest change of a contact's normal velocity that the sweep made,
@@ -79,7 +99,7 @@ public sealed partial class SequentialImpulseSolver
     /// the bottom's) counted as converged while it still sank: a 4,000-disc pit kept creeping at 1–2 cm/s with a
     /// hundred impacts per step; with this measure it is at rest (every ball under 1 mm/s) 9 s after its pour began.
     /// </remarks>
-    private bool Sweep()
+    private float Sweep()
     {
         SweepsThisStep++;
         float largestChange = 0, largestImpulse = 0, largestSpeedChange = 0;
@@ -97,9 +117,12 @@ public sealed partial class SequentialImpulseSolver
             }
         }
 
-        return _gravity != Vector3.Zero
-            ? largestSpeedChange <= _convergenceTolerance * _gravity.Length() * _step!.SubstepLength
-            : largestChange <= _convergenceTolerance * largestImpulse;
+        if (_gravity != Vector3.Zero)
+        {
+            return largestSpeedChange / (_gravity.Length() * _step!.SubstepLength);
+        }
+
+        return largestChange == 0 ? 0 : largestChange / largestImpulse; // +∞ when every impulse fell to zero
     }
 
     /// <summary>

@@ -24,8 +24,8 @@ namespace SimpleDynamics.Response;
 /// contact the <i>accumulated</i> normal impulse is clamped to ≥ 0 (a contact pushes, never pulls) and the accumulated
 /// friction impulse to the disc of radius μ × normal impulse (Coulomb). Warm starting applies last step's accumulated
 /// impulses first (and, within a step, the previous substep's), so a resting pile starts almost solved.
-/// <see cref="VelocityIterations"/> sweeps are always done, then up to <see cref="ExtraIterations"/> more until the
-/// impulses stop changing. The contacts' normals and lever arms are measured again every substep, so the equal and
+/// <see cref="VelocityIterations"/> sweeps are done, then up to <see cref="ExtraIterations"/> more until the
+/// impulses stop changing; a pile that the warm start has already solved stops after the first. The contacts' normals and lever arms are measured again every substep, so the equal and
 /// opposite impulses act along the current line of contact and conserve angular momentum.</para>
 /// <para><b>Shock propagation</b> (Guendelman, Bridson and Fedkiw, "Nonconvex Rigid Bodies with Stacking",
 /// SIGGRAPH 2003, https://physbam.stanford.edu/~fedkiw/papers/stanford2003-01.pdf). Under gravity, after the sweeps,
@@ -93,7 +93,9 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
     }
 
     /// <summary>
-    /// Velocity iterations (Gauss–Seidel sweeps) per substep, always done (≥ 1, default 4). More iterations:
+    /// Velocity iterations (Gauss–Seidel sweeps) per substep (≥ 1, default 4), done unless the first finds the contacts
+    /// already solved: a sweep that changes no contact by more than a quarter of the <see cref="ConvergenceTolerance"/>
+    /// ends the substep's sweeps (a pile at rest, warm-started, then spends one sweep a substep). More iterations:
     /// stiffer piles, more time.
     /// </summary>
     public int VelocityIterations
