@@ -25,8 +25,9 @@ namespace SimpleDynamics.Response;
 /// friction impulse to the disc of radius μ × normal impulse (Coulomb). Warm starting applies last step's accumulated
 /// impulses first (and, within a step, the previous substep's), so a resting pile starts almost solved.
 /// <see cref="VelocityIterations"/> sweeps are done, then up to <see cref="ExtraIterations"/> more until the
-/// impulses stop changing; a pile that the warm start has already solved stops after the first. The contacts' normals and lever arms are measured again every substep, so the equal and
-/// opposite impulses act along the current line of contact and conserve angular momentum.</para>
+/// impulses stop changing; a pile that the warm start has already solved stops after the first. The contacts' normals
+/// and lever arms are measured again every substep, so the equal and opposite impulses act along the current line of
+/// contact and conserve angular momentum.</para>
 /// <para><b>Shock propagation</b> (Guendelman, Bridson and Fedkiw, "Nonconvex Rigid Bodies with Stacking",
 /// SIGGRAPH 2003, https://physbam.stanford.edu/~fedkiw/papers/stanford2003-01.pdf). Under gravity, after the sweeps,
 /// one more bottom-up pass over the resting contacts that carry weight treats the lower body of each as immovable
