@@ -3,11 +3,13 @@ using System;
 namespace SimpleDynamics.Response;
 
 /// <summary>
-/// Orders items from the lowest to the highest, stable: a counting sort into n equal slices between the lowest and
-/// the highest height, then each slice put in order on its own. A pile spreads over its slices with about one item in
+/// Orders items from the lowest to the highest: a counting sort into n equal slices between the lowest and the
+/// highest height, then each slice put in order on its own. A pile spreads over its slices with about one item in
 /// each, so the whole costs O(n); a small world with one body far above the rest puts most items in one slice, and the
 /// slice's own sort keeps them in order (the solver's shock passes go bottom-up and need it: a body corrected out of
-/// the ground after the contact above it was corrected is pushed back into that contact). Reuses its working arrays.
+/// the ground after the contact above it was corrected is pushed back into that contact). Equal heights are ordered by
+/// the items' tie keys when they are given (the solver's contacts: then the order, and so the solver's results, do not
+/// depend on the order a detector reported them in), else kept in their order. Reuses its working arrays.
 /// </summary>
 internal sealed class HeightOrder
 {
@@ -18,6 +20,8 @@ internal sealed class HeightOrder
 
     private int[] _cursor = new int[InitialCapacity];
     private long[] _keys = new long[InitialCapacity]; // a large slice's (height, index) keys while it is sorted
+    private ulong[] _runTies = new ulong[InitialCapacity]; // the tie keys of a run of equal heights in a large slice
+    private int[] _runItems = new int[InitialCapacity];
     private int _peak; // the most slices one sort used since the last ShrinkIfIdle
     private ShrinkPolicy _room;
 
@@ -28,6 +32,8 @@ internal sealed class HeightOrder
         if (_keys.Length > _cursor.Length)
         {
             Buffers.ShrinkTo(ref _keys, _cursor.Length, 0);
+            Buffers.ShrinkTo(ref _runTies, _cursor.Length, 0);
+            Buffers.ShrinkTo(ref _runItems, _cursor.Length, 0);
         }
 
         _peak = 0;
@@ -38,10 +44,12 @@ internal sealed class HeightOrder
     {
         Buffers.ShrinkTo(ref _cursor, InitialCapacity, 0);
         Buffers.ShrinkTo(ref _keys, InitialCapacity, 0);
+        Buffers.ShrinkTo(ref _runTies, InitialCapacity, 0);
+        Buffers.ShrinkTo(ref _runItems, InitialCapacity, 0);
     }
 
     /// <summary>
-    /// Puts <paramref name="items"/> in the order <see cref="Sort"/> gave: item k becomes the item that was at
+    /// Puts <paramref name="items"/> in the order Sort gave: item k becomes the item that was at
     /// <paramref name="order"/>[k]. In place, one cycle of the permutation at a time, so each item is copied once and
     /// no second array is needed; the order is used up (each entry is turned negative once its position is filled).
     /// </summary>
@@ -70,8 +78,14 @@ internal sealed class HeightOrder
         }
     }
 
-    /// <summary>Fills <paramref name="order"/> with the indices 0 … n − 1 of <paramref name="heights"/>, lowest first.</summary>
-    public void Sort(ReadOnlySpan<float> heights, Span<int> order)
+    /// <summary>Fills <paramref name="order"/> with the indices 0 … n − 1 of <paramref name="heights"/>, lowest first; equal heights keep their order.</summary>
+    public void Sort(ReadOnlySpan<float> heights, Span<int> order) => Sort(heights, ReadOnlySpan<ulong>.Empty, order);
+
+    /// <summary>
+    /// Fills <paramref name="order"/> with the indices 0 … n − 1 of <paramref name="heights"/>, lowest first, and
+    /// equal heights by their <paramref name="ties"/> (one distinct key per item), smallest first.
+    /// </summary>
+    public void Sort(ReadOnlySpan<float> heights, ReadOnlySpan<ulong> ties, Span<int> order)
     {
         int n = heights.Length;
         float lowest = float.PositiveInfinity, highest = float.NegativeInfinity;
@@ -81,6 +95,8 @@ internal sealed class HeightOrder
             highest = MathF.Max(highest, heights[i]);
         }
 
+        Buffers.EnsureCapacity(ref _cursor, n + 1);
+        _peak = Math.Max(_peak, n + 1); // the key arrays are kept no larger than this
         if (!(highest > lowest) || float.IsInfinity(highest - lowest))
         {
             for (int i = 0; i < n; i++)
@@ -88,11 +104,14 @@ internal sealed class HeightOrder
                 order[i] = i;
             }
 
+            if (!ties.IsEmpty && n > 1 && !float.IsInfinity(highest - lowest))
+            {
+                SortByKeys(heights, ties, order); // all at one height: by their ties alone
+            }
+
             return;
         }
 
-        Buffers.EnsureCapacity(ref _cursor, n + 1);
-        _peak = Math.Max(_peak, n + 1);
         Array.Clear(_cursor, 0, n + 1);
         float scale = (n - 1) / (highest - lowest);
         for (int i = 0; i < n; i++)
@@ -116,26 +135,26 @@ internal sealed class HeightOrder
             int count = _cursor[s] - start;
             if (count > InsertionSlice)
             {
-                SortByKeys(heights, order.Slice(start, count));
+                SortByKeys(heights, ties, order.Slice(start, count));
             }
             else if (count > 1)
             {
-                SortByInsertion(heights, order.Slice(start, count));
+                SortByInsertion(heights, ties, order.Slice(start, count));
             }
         }
 
         int Slice(float height) => Math.Min((int)((height - lowest) * scale), n - 1);
     }
 
-    /// <summary>Stable insertion sort of a few indices by their heights.</summary>
-    private static void SortByInsertion(ReadOnlySpan<float> heights, Span<int> slice)
+    /// <summary>Stable insertion sort of a few indices by their heights, then their ties if given.</summary>
+    private static void SortByInsertion(ReadOnlySpan<float> heights, ReadOnlySpan<ulong> ties, Span<int> slice)
     {
         for (int k = 1; k < slice.Length; k++)
         {
             int item = slice[k];
             float height = heights[item];
             int j = k - 1;
-            for (; j >= 0 && heights[slice[j]] > height; j--)
+            for (; j >= 0 && (heights[slice[j]] > height || (heights[slice[j]] == height && !ties.IsEmpty && ties[slice[j]] > ties[item])); j--)
             {
                 slice[j + 1] = slice[j];
             }
@@ -148,7 +167,7 @@ internal sealed class HeightOrder
     /// Sorts many indices by (height, index), packed into one 64-bit key each so that an unstable comparison sort of
     /// the keys is stable in the items: the height's bits made to order as integers do, then the index.
     /// </summary>
-    private void SortByKeys(ReadOnlySpan<float> heights, Span<int> slice)
+    private void SortByKeys(ReadOnlySpan<float> heights, ReadOnlySpan<ulong> ties, Span<int> slice)
     {
         Buffers.EnsureCapacity(ref _keys, slice.Length);
         for (int k = 0; k < slice.Length; k++)
@@ -161,6 +180,39 @@ internal sealed class HeightOrder
         {
             slice[k] = (int)(_keys[k] & 0xFFFFFFFF);
         }
+
+        if (ties.IsEmpty)
+        {
+            return;
+        }
+
+        // Each run of equal heights, now in index order, by its ties instead.
+        for (int start = 0, end; start < slice.Length; start = end)
+        {
+            int height = (int)(_keys[start] >> 32);
+            for (end = start + 1; end < slice.Length && (int)(_keys[end] >> 32) == height; end++)
+            {
+            }
+
+            if (end - start > 1)
+            {
+                SortRunByTies(ties, slice.Slice(start, end - start));
+            }
+        }
+    }
+
+    private void SortRunByTies(ReadOnlySpan<ulong> ties, Span<int> run)
+    {
+        Buffers.EnsureCapacity(ref _runTies, run.Length);
+        Buffers.EnsureCapacity(ref _runItems, run.Length);
+        for (int k = 0; k < run.Length; k++)
+        {
+            _runItems[k] = run[k];
+            _runTies[k] = ties[run[k]];
+        }
+
+        Array.Sort(_runTies, _runItems, 0, run.Length); // distinct ties: any sort orders them the same
+        _runItems.AsSpan(0, run.Length).CopyTo(run);
     }
 
     /// <summary>The bits of a finite float as an int that orders as the float does (negative floats' bits reversed).</summary>

@@ -21,7 +21,8 @@ internal struct PileMeasure
 {
     private readonly float _g;
     private readonly float _restingSpeedSquared;
-    private float _lowest, _highest, _diameters;
+    private float _lowest, _highest;
+    private double _diameters; // exact for up to a million diameters within a factor 256 of each other, so in any order alike
     private int _count;
 
     /// <summary>A measure with no contact yet, for a world with <paramref name="gravity"/> stepped by <paramref name="dt"/>.</summary>
@@ -52,5 +53,5 @@ internal struct PileMeasure
     }
 
     /// <summary>The pile's depth in mean diameters (0 without gravity, or when no contact rests).</summary>
-    public readonly float Layers => _count == 0 || _g == 0 ? 0 : (_highest - _lowest) / (_g * _diameters / _count);
+    public readonly float Layers => _count == 0 || _g == 0 ? 0 : (float)((_highest - _lowest) / (_g * _diameters / _count));
 }

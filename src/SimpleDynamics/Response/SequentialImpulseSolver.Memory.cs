@@ -72,6 +72,7 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _constraints, capacity, 0);
         Buffers.ShrinkTo(ref _order, capacity, 0);
         Buffers.ShrinkTo(ref _heights, capacity, 0);
+        Buffers.ShrinkTo(ref _ties, capacity, 0);
         Buffers.ShrinkTo(ref _active, capacity, 0);
         Buffers.ShrinkTo(ref _touching, 2 * capacity, 0);
         Buffers.ShrinkTo(ref _deepQueue, capacity, 0);

@@ -20,6 +20,7 @@ public sealed partial class SequentialImpulseSolver
     private float[] _radii = new float[InitialCapacity];
     private float[] _inertiaScalars = new float[InitialCapacity]; // per slot: k when the world I⁻¹ is k·1 (spheres, the ground), else NaN
     private float[] _heights = new float[InitialCapacity];
+    private ulong[] _ties = new ulong[InitialCapacity]; // per contact: its bodies' places in the world, for equal heights
     private int[] _active = new int[InitialCapacity]; // the active constraints of the substep, in sweep order (MeasureConstraints)
     private int _activeCount;
     private int _prepared;
@@ -130,21 +131,28 @@ public sealed partial class SequentialImpulseSolver
 
     /// <summary>
     /// Visits contacts from the bottom of a pile upwards (along gravity), so that each Gauss–Seidel sweep carries
-    /// support up through a stack instead of down through it. The contacts also give the pile's depth
-    /// (<see cref="PileMeasure"/>), which sets the step's budget of extra sweeps (see <see cref="ExtraSweepsFor"/>).
+    /// support up through a stack instead of down through it; contacts at the same height (a floor's) by their bodies'
+    /// places in the world. The order, and so every result, is the same whatever order the detector reported the
+    /// contacts in. The contacts also give the pile's depth (<see cref="PileMeasure"/>), which sets the step's budget of
+    /// extra sweeps (see <see cref="ExtraSweepsFor"/>).
     /// </summary>
     private void OrderAlongGravity(Span<Contact> contacts, Vector3 gravity)
     {
         Buffers.EnsureCapacity(ref _order, contacts.Length);
         Buffers.EnsureCapacity(ref _heights, contacts.Length);
+        Buffers.EnsureCapacity(ref _ties, contacts.Length);
         var pile = new PileMeasure(gravity, _step!.TimeStep);
         for (int i = 0; i < contacts.Length; i++)
         {
-            _heights[i] = -Vector3.Dot(contacts[i].Point, gravity);
-            pile.Add(contacts[i], _heights[i]);
+            ref readonly Contact contact = ref contacts[i];
+            _heights[i] = -Vector3.Dot(contact.Point, gravity);
+            _ties[i] = contact.IsPlaneContact
+                ? Contact.PlaneKey(contact.BodyA.index, contact.PlaneIndex)
+                : Contact.PairKey(contact.BodyA.index, contact.BodyB.index);
+            pile.Add(contact, _heights[i]);
         }
 
-        _heightOrder.Sort(_heights.AsSpan(0, contacts.Length), _order.AsSpan(0, contacts.Length));
+        _heightOrder.Sort(_heights.AsSpan(0, contacts.Length), _ties.AsSpan(0, contacts.Length), _order.AsSpan(0, contacts.Length));
         _extraSweeps = ExtraSweepsFor(pile.Layers);
     }
 
