@@ -17,6 +17,11 @@ namespace SimpleDynamics.Collision;
 /// sweep along one axis meets every body in a slab, about n^(2/3) of them in 3-D, while a grid cell holds a few.
 /// The grid is kept as the default for its even behaviour in 2-D and 3-D; its constant factor is the next thing
 /// to improve.</para>
+/// <para><b>A dense grid when the world is compact.</b> When the cells the bodies' boxes span are no more than the
+/// hash table would have buckets (a pit, a pile, a crowd), every cell gets a bucket of its own, numbered row by row
+/// (x, then y, then z), instead of a hashed one. No two cells share a bucket then, and the pairs are found cell by
+/// cell through the world, so the bodies they read follow one another in space instead of jumping across it. A
+/// world with a body far from the rest would need too many cells, and is hashed.</para>
 /// <para><b>Exactly once.</b> A pair is reported only in the cell that holds the minimum corner of the
 /// intersection of the two bounding boxes, the one cell both bodies are certain to share; so no pair is found
 /// twice and no set of seen pairs is needed.</para>
@@ -44,10 +49,17 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
     private int[] _bucketStart = new int[InitialBuckets + 1];
     private int[] _oversized = new int[InitialOversized];
     private int _oversizedCount;
+    private Vector3 _lowest, _highest; // the corners of the box around every body's sphere (GatherBounds)
+    private bool _dense; // whether this call numbers cells as a dense grid (PrepareBuckets)
+    private Cell _gridLow; // the dense grid's first cell, and its size in cells along x and y
+    private int _gridColumns, _gridRows;
     private ShrinkPolicy _boundsRoom, _entryRoom, _bucketRoom, _oversizedRoom;
 
     /// <summary>The (cell, body) entries of the grid in the last call with two bodies or more, for tests.</summary>
     internal int LastEntryCount { get; private set; }
+
+    /// <summary>Whether the last call with two bodies or more used a dense grid (see the remarks), for tests.</summary>
+    internal bool LastUsedDenseGrid => _dense;
 
     /// <inheritdoc />
     public void FindContacts(ReadOnlySpan<RigidBody> bodies, CollisionData collisions, float margin = 0f, float lookahead = 0f)
@@ -65,11 +77,11 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
 
         Vector3 inverseCellSize = GatherBounds(bodies, 0.5f * margin, lookahead);
         int entryCount = LastEntryCount = CountEntries(n, inverseCellSize);
-        int bucketMask = PrepareBuckets(entryCount);
-        FillBuckets(n, bucketMask);
-        FindPairsInBuckets(bodies, bucketMask, collisions, margin, lookahead);
+        int lastBucket = PrepareBuckets(entryCount, inverseCellSize);
+        FillBuckets(n, lastBucket);
+        FindPairsInBuckets(bodies, lastBucket, collisions, margin, lookahead);
         FindPairsWithOversized(bodies, collisions, margin, lookahead);
-        ShrinkIfIdle(n, entryCount, bucketMask + 2);
+        ShrinkIfIdle(n, entryCount, lastBucket + 2);
     }
 
     /// <summary>
@@ -124,6 +136,9 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
             high = Vector3.Max(high, c + new Vector3(reach));
         }
 
+        _lowest = low;
+        _highest = high;
+
         float cellSize = (float)(2 * radiusSum / bodies.Length);
         Vector3 extent = high - low;
         float inverse = 1f / cellSize;
@@ -161,12 +176,28 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
         return entries;
     }
 
-    private int PrepareBuckets(int entryCount)
+    /// <summary>
+    /// Chooses the buckets and clears their counts; returns the last bucket's number. Hashed, there are a power of two
+    /// at least twice the entries, and the last bucket's number masks the hash; as a dense grid, one per cell of the
+    /// box around all bodies, when those are no more (see the remarks).
+    /// </summary>
+    private int PrepareBuckets(int entryCount, Vector3 inverseCellSize)
     {
         int buckets = 16;
         while (buckets < 2 * entryCount)
         {
             buckets <<= 1;
+        }
+
+        Cell low = CellOf(_lowest, inverseCellSize), high = CellOf(_highest, inverseCellSize);
+        long columns = high.X - low.X + 1L, rows = high.Y - low.Y + 1L, layers = high.Z - low.Z + 1L;
+        _dense = columns * rows <= buckets && columns * rows * layers <= buckets; // in that order, so it cannot overflow
+        if (_dense)
+        {
+            buckets = (int)(columns * rows * layers);
+            _gridLow = low;
+            _gridColumns = (int)columns;
+            _gridRows = (int)rows;
         }
 
         Buffers.EnsureCapacity(ref _entries, entryCount);
@@ -175,8 +206,8 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
         return buckets - 1;
     }
 
-    /// <summary>Counting sort of (cell, body) entries by hash bucket.</summary>
-    private void FillBuckets(int n, int bucketMask)
+    /// <summary>Counting sort of (cell, body) entries by bucket.</summary>
+    private void FillBuckets(int n, int lastBucket)
     {
         // Count per bucket (shifted by one so that the prefix sum yields start offsets).
         for (int i = 0; i < n; i++)
@@ -191,11 +222,11 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
             for (int y = b.Min.Y; y <= b.Max.Y; y++)
             for (int x = b.Min.X; x <= b.Max.X; x++)
             {
-                _bucketStart[(Hash(x, y, z) & bucketMask) + 1]++;
+                _bucketStart[BucketOf(x, y, z, lastBucket) + 1]++;
             }
         }
 
-        for (int k = 1; k <= bucketMask + 1; k++)
+        for (int k = 1; k <= lastBucket + 1; k++)
         {
             _bucketStart[k] += _bucketStart[k - 1];
         }
@@ -213,13 +244,13 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
             for (int y = b.Min.Y; y <= b.Max.Y; y++)
             for (int x = b.Min.X; x <= b.Max.X; x++)
             {
-                int slot = _bucketStart[Hash(x, y, z) & bucketMask]++;
+                int slot = _bucketStart[BucketOf(x, y, z, lastBucket)]++;
                 _entries[slot] = new Entry { Body = i, Cell = new Cell(x, y, z) };
             }
         }
 
         // ... so shift back by one to restore the starts.
-        for (int k = bucketMask + 1; k > 0; k--)
+        for (int k = lastBucket + 1; k > 0; k--)
         {
             _bucketStart[k] = _bucketStart[k - 1];
         }
@@ -227,9 +258,9 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
         _bucketStart[0] = 0;
     }
 
-    private void FindPairsInBuckets(ReadOnlySpan<RigidBody> bodies, int bucketMask, CollisionData collisions, float margin, float lookahead)
+    private void FindPairsInBuckets(ReadOnlySpan<RigidBody> bodies, int lastBucket, CollisionData collisions, float margin, float lookahead)
     {
-        for (int k = 0; k <= bucketMask; k++)
+        for (int k = 0; k <= lastBucket; k++)
         {
             int start = _bucketStart[k], end = _bucketStart[k + 1];
             for (int p = start; p < end; p++)
@@ -302,6 +333,11 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
 
     private static int CellOf(float coordinate, float inverseCellSize) =>
         (int)Math.Clamp(MathF.Floor(coordinate * inverseCellSize), -CellLimit, CellLimit);
+
+    /// <summary>The bucket of a cell: its place in the dense grid, row by row, or its hash.</summary>
+    private int BucketOf(int x, int y, int z, int lastBucket) => _dense
+        ? x - _gridLow.X + _gridColumns * (y - _gridLow.Y + _gridRows * (z - _gridLow.Z))
+        : Hash(x, y, z) & lastBucket;
 
     private static int Hash(int x, int y, int z) => unchecked((x * 73856093) ^ (y * 19349663) ^ (z * 83492791));
 

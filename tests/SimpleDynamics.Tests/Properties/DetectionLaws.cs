@@ -26,11 +26,25 @@ public class DetectionLaws
 
     [Fact]
     public void BruteForceDetector_finds_exactly_the_overlapping_pairs() =>
-        Check(new BruteForceDetector(), seed: 401);
+        _ = Check(new BruteForceDetector(), seed: 401);
 
     [Fact]
-    public void SpatialHashDetector_finds_exactly_the_overlapping_pairs() =>
-        Check(new SpatialHashDetector(), seed: 402); // one instance for every scene: its reused buffers are tested too
+    public void SpatialHashDetector_finds_exactly_the_overlapping_pairs()
+    {
+        (_, int hashed) = Check(new SpatialHashDetector(), seed: 402); // one instance for every scene: its reused buffers are tested too
+        Assert.True(hashed >= 100, $"only {hashed} scenes hashed");
+    }
+
+    /// <summary>
+    /// The same scenes crowded four times closer, with the far bodies brought into the crowd: most are then compact
+    /// enough for the spatial hash's dense grid (see its remarks), whose cell numbering must find exactly the same pairs.
+    /// </summary>
+    [Fact]
+    public void SpatialHashDetector_finds_exactly_the_overlapping_pairs_in_crowded_worlds()
+    {
+        (int dense, _) = Check(new SpatialHashDetector(), seed: 405, flatten: p => p.Length() > 1000 ? p * 1e-3f : p * 0.25f);
+        Assert.True(dense >= 100, $"only {dense} scenes on the dense grid");
+    }
 
     /// <summary>
     /// The same scenes flattened onto the plane z = 0 and onto the line y = z = 0: the grid then keeps one layer of
@@ -52,6 +66,7 @@ public class DetectionLaws
         detector.FindContacts(bodies, new CollisionData());
         // A box two cells wide at most covers 2 × 2 cells in the plane; two layers along z would double that.
         Assert.InRange(detector.LastEntryCount, bodies.Length, 4 * bodies.Length);
+        Assert.True(detector.LastUsedDenseGrid, "a pit is compact: its cells are numbered as a dense grid");
     }
 
     /// <summary>
@@ -83,10 +98,17 @@ public class DetectionLaws
             var pairs = collisions.Contacts.ToArray().Select(x => (x.BodyA, x.BodyB)).ToList();
             Assert.Contains((a, b), pairs);
             Assert.Contains((e, f), pairs);
+            Assert.False(detector is SpatialHashDetector { LastUsedDenseGrid: true }, "millions of cells apart: hashed, not a dense grid");
         }
     }
 
-    private static void Check(ICollisionDetector detector, ulong seed, Func<System.Numerics.Vector3, System.Numerics.Vector3>? flatten = null, [System.Runtime.CompilerServices.CallerMemberName] string name = "") =>
+    /// <summary>
+    /// Checks the law over generated scenes; returns how many the spatial hash found on its dense grid and how many
+    /// hashed (compact scenes, and scenes with a body far out), so that tests can see both ways of numbering cells tested.
+    /// </summary>
+    private static (int Dense, int Hashed) Check(ICollisionDetector detector, ulong seed, Func<System.Numerics.Vector3, System.Numerics.Vector3>? flatten = null, [System.Runtime.CompilerServices.CallerMemberName] string name = "")
+    {
+        int dense = 0, hashed = 0;
         PropertyCheck.Run(Flattened(flatten), scene =>
         {
             RigidBody[] bodies = scene.Bodies.Select(s => s.Build()).ToArray();
@@ -98,6 +120,10 @@ public class DetectionLaws
 
             var collisions = new CollisionData(capacity: 1); // grows as needed
             detector.FindContacts(bodies, collisions);
+            if (detector is SpatialHashDetector grid && bodies.Length >= 2)
+            {
+                _ = grid.LastUsedDenseGrid ? dense++ : hashed++;
+            }
 
             var found = new HashSet<(int, int)>();
             foreach (Contact contact in collisions.Contacts)
@@ -114,6 +140,9 @@ public class DetectionLaws
             Law.Holds(missing.Count == 0 && extra.Count == 0,
                 $"missing pairs [{string.Join(", ", missing)}], extra pairs [{string.Join(", ", extra)}]");
         }, seed, maxTest: 400, name: name);
+
+        return (dense, hashed);
+    }
 
     private static FsCheck.Gen<DetectionScene> Flattened(Func<System.Numerics.Vector3, System.Numerics.Vector3>? flatten) =>
         flatten is null
