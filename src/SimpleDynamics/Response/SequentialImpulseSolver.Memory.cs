@@ -58,6 +58,10 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _radii, capacity, 0);
         Buffers.ShrinkTo(ref _inertiaScalars, capacity, 0);
         Buffers.ShrinkTo(ref _bodyOrder, capacity, 0);
+        Buffers.ShrinkTo(ref _publishedLinear, capacity, 0);
+        Buffers.ShrinkTo(ref _publishedAngular, capacity, 0);
+        Buffers.ShrinkTo(ref _contactsOfSlotStart, capacity + 1, 0);
+        Buffers.ShrinkTo(ref _contactsOfSlotFill, capacity, 0);
         Buffers.ShrinkTo(ref _slotOf, capacity, 0);
         Buffers.ShrinkTo(ref _bodyHeights, capacity, 0);
         Buffers.ShrinkTo(ref _anchorDistance, capacity, 0);
@@ -75,6 +79,9 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _ties, capacity, 0);
         Buffers.ShrinkTo(ref _active, capacity, 0);
         Buffers.ShrinkTo(ref _touching, 2 * capacity, 0);
+        Buffers.ShrinkTo(ref _contactsOfSlot, 2 * capacity, 0);
+        Buffers.ShrinkTo(ref _visitNow, (capacity + 63) >> 6, 0);
+        Buffers.ShrinkTo(ref _visitNext, (capacity + 63) >> 6, 0);
         Buffers.ShrinkTo(ref _deepQueue, capacity, 0);
         Buffers.ShrinkTo(ref _queued, capacity, 0);
     }

@@ -59,6 +59,7 @@ public sealed partial class SequentialImpulseSolver
         }
 
         bool converged = _velocityIterations == 1 && change <= _convergenceTolerance;
+        bool local = _extraSweeps > 0 && _gravity != Vector3.Zero && _velocityIterations > 1; // see SequentialImpulseSolver.LocalSweeps.cs
         for (int iteration = 1; iteration < _velocityIterations; iteration++)
         {
             if (iteration < _velocityIterations - 1 || _extraSweeps == 0)
@@ -67,12 +68,24 @@ public sealed partial class SequentialImpulseSolver
             }
             else
             {
+                if (local)
+                {
+                    RememberVelocities(); // what the last fixed sweep starts from, to see which bodies it changed
+                }
+
                 converged = Sweep() <= _convergenceTolerance;
             }
         }
 
-        // Further sweeps only while the last one has not converged.
-        for (int extra = 0; extra < _extraSweeps && !converged; extra++)
+        // Further sweeps only while the last one has not converged: under gravity, while few contacts still change,
+        // only those; then (or at once, in a pile that is moving all over) over every contact.
+        int extra = 0;
+        if (!converged && local)
+        {
+            extra = SweepWhereChanging(_extraSweeps, out converged);
+        }
+
+        for (; extra < _extraSweeps && !converged; extra++)
         {
             converged = Sweep() <= _convergenceTolerance;
         }

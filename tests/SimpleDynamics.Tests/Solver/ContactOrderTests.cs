@@ -62,9 +62,11 @@ public class ContactOrderTests
             scene(new Reordered(new SpatialHashDetector(), reverse: true)),
             scene(new Reordered(new BruteForceDetector(), reverse: false)),
         };
+        int pressed = 0;
         for (int step = 0; step < steps; step++)
         {
             reference.Step(Dt);
+            pressed = Math.Max(pressed, reference.Collisions.Contacts.ToArray().Count(c => c.NormalImpulse > 0));
             foreach (World other in others)
             {
                 other.Step(Dt);
@@ -82,7 +84,7 @@ public class ContactOrderTests
             }
         }
 
-        Assert.True(reference.Collisions.Contacts.ToArray().Count(c => c.NormalImpulse > 0) > 10, "the scene must press contacts");
+        Assert.True(pressed > 10, $"the scene must press contacts (at most {pressed} in a step)");
     }
 
     /// <summary>Another detector's contacts, reported reversed or shuffled (with a fixed seed).</summary>

@@ -1,0 +1,262 @@
+using System;
+using System.Numerics;
+
+namespace SimpleDynamics.Response;
+
+/// <summary>
+/// The extra sweeps under gravity: Gauss–Seidel over the contacts that can still change, not over every contact.
+/// </summary>
+/// <remarks>
+/// <para>A contact just solved has its own normal velocity at zero (or its impulse at zero), and solving it again
+/// changes nothing as long as neither of its bodies has moved since. So once the fixed sweeps have left most of a pile
+/// solved and some part of it not (a few contacts that press or let go in a deep pile keep a region stirring), a sweep
+/// over every contact spends almost all its time confirming what is already solved. These sweeps visit, still
+/// bottom-up, only the contacts of bodies whose velocity has changed by more than a quarter of the tolerance
+/// (see <see cref="ConvergenceTolerance"/>) since their contacts were last told (the body's velocity is then
+/// "published" again); the rest would each change by less than that on both sides, which the tolerance allows.</para>
+/// <para>This is the Gauss–Seidel of the full sweeps with the contacts that cannot change left out: relaxing only
+/// where the residual is large is the idea of Southwell's relaxation method (R. V. Southwell, <i>Relaxation Methods
+/// in Engineering Science</i>, Oxford University Press, 1940). The largest change of the contacts visited decides
+/// convergence, as <see cref="Sweep"/>'s does for all of them.</para>
+/// <para><b>Only while few bodies change.</b> Keeping track costs more per contact than solving it, so these sweeps
+/// begin only when the last fixed sweep changed at most an eighth of the bodies, and give way to full sweeps once a
+/// quarter of the contacts is to be visited again. Without those limits an 8,000-disc pour spent 2–3 times as long
+/// per step while it landed (every body moving). Measured in the settled 16,000-disc pit in a state where full sweeps
+/// did not converge (98 sweeps a step, 72–83 ms a step): the local sweeps visited 4 % of the contacts a full sweep
+/// would, the step took 42–48 ms, and the pile then converged within its fixed sweeps (35 ms a step).</para>
+/// </remarks>
+public sealed partial class SequentialImpulseSolver
+{
+    private int[] _contactsOfSlotStart = new int[InitialCapacity]; // per slot + 1: where its active contacts begin
+    private int[] _contactsOfSlotFill = new int[InitialCapacity];
+    private int[] _contactsOfSlot = new int[InitialCapacity]; // positions in _active, listed under both bodies
+    private Vector3[] _publishedLinear = new Vector3[InitialCapacity]; // per slot: the velocity its contacts were last solved with
+    private Vector3[] _publishedAngular = new Vector3[InitialCapacity];
+    private ulong[] _visitNow = new ulong[InitialCapacity]; // bit p: visit _active[p] in this sweep
+    private ulong[] _visitNext = new ulong[InitialCapacity]; // bit p: visit _active[p] in the next sweep
+    private int _marked; // contacts marked for the next sweep so far
+
+    /// <summary>Sweeps of the step begun last that visited only the contacts of changed bodies, for tests.</summary>
+    internal int LocalSweepsThisStep { get; private set; }
+
+    /// <summary>Contacts solved by those sweeps, for tests.</summary>
+    internal long LocalSolvesThisStep { get; private set; }
+
+    /// <summary>For tests: after local sweeps converge, measure what a full sweep would still change (costs a pass over the contacts).</summary>
+    internal bool MeasureResidualAfterLocalSweeps { get; set; }
+
+    /// <summary>
+    /// The largest change of a contact's normal velocity that a full sweep would have made when local sweeps had last
+    /// converged, on the tolerance's scale (see <see cref="Sweep"/>), if <see cref="MeasureResidualAfterLocalSweeps"/>.
+    /// </summary>
+    internal float LargestResidualAfterLocalSweeps { get; private set; }
+
+    /// <summary>
+    /// Keeps every body's velocity as the last fixed sweep begins (see <see cref="Sweeps"/>), so that the bodies that
+    /// sweep changed can be found afterwards.
+    /// </summary>
+    private void RememberVelocities()
+    {
+        int slots = _step!.Bodies.Length + 1; // slot 0 is the ground
+        Buffers.EnsureCapacity(ref _publishedLinear, slots);
+        Buffers.EnsureCapacity(ref _publishedAngular, slots);
+        for (int s = 0; s < slots; s++)
+        {
+            _publishedLinear[s] = _bodies[s].Linear;
+            _publishedAngular[s] = _bodies[s].Angular;
+        }
+    }
+
+    /// <summary>
+    /// Sweeps, up to <paramref name="budget"/> of them, only the contacts of the bodies that changed since the
+    /// velocities were remembered, while those are few: at most an eighth of the bodies to begin with, a quarter of
+    /// the contacts after that. Returns the sweeps spent; <paramref name="converged"/> tells whether the last converged.
+    /// </summary>
+    private int SweepWhereChanging(int budget, out bool converged)
+    {
+        converged = false;
+        int slots = _step!.Bodies.Length + 1;
+        float speedScale = _gravity.Length() * _step.SubstepLength;
+        float drift = 0.25f * _convergenceTolerance * speedScale;
+        int changed = 0;
+        for (int s = 1; s < slots; s++)
+        {
+            changed += Drifted(s, drift * drift) ? 1 : 0;
+        }
+
+        if (changed > slots / 8)
+        {
+            return 0; // moving all over: sweeping everything is cheaper than keeping track
+        }
+
+        ListContactsOfSlots(slots);
+        int words = (_activeCount + 63) >> 6;
+        Buffers.EnsureCapacity(ref _visitNow, words);
+        Buffers.EnsureCapacity(ref _visitNext, words);
+        Array.Clear(_visitNow, 0, words);
+        Array.Clear(_visitNext, 0, words);
+        _marked = 0;
+        for (int s = 1; s < slots; s++)
+        {
+            Publish(s, position: -1, drift * drift); // every contact of a changed body, in the first sweep
+        }
+
+        for (int sweep = 1; sweep <= budget; sweep++)
+        {
+            _marked = 0;
+            if (SweepMarked(words, drift * drift) <= _convergenceTolerance * speedScale)
+            {
+                converged = true;
+                if (MeasureResidualAfterLocalSweeps)
+                {
+                    LargestResidualAfterLocalSweeps = MathF.Max(LargestResidualAfterLocalSweeps, LargestNormalResidual() / speedScale);
+                }
+
+                return sweep;
+            }
+
+            if (_marked > _activeCount / 4)
+            {
+                return sweep; // the change has spread: the remaining sweeps go over every contact
+            }
+
+            (_visitNow, _visitNext) = (_visitNext, _visitNow);
+            Array.Clear(_visitNext, 0, words);
+        }
+
+        return budget;
+    }
+
+    /// <summary>Whether the body in <paramref name="slot"/> has changed by more than the drift allowed since its velocity was last published.</summary>
+    private bool Drifted(int slot, float drift2)
+    {
+        ref VelocityState body = ref _bodies[slot];
+        float radius = _radii[slot];
+        return Vector3.DistanceSquared(body.Linear, _publishedLinear[slot]) +
+            radius * radius * Vector3.DistanceSquared(body.Angular, _publishedAngular[slot]) > drift2;
+    }
+
+    /// <summary>
+    /// One bottom-up sweep over the marked contacts; a body that changes by more than the drift allowed marks its
+    /// contacts, the later ones for this sweep and the earlier ones for the next. Returns the largest change of a
+    /// contact's normal velocity.
+    /// </summary>
+    private float SweepMarked(int words, float drift2)
+    {
+        SweepsThisStep++;
+        LocalSweepsThisStep++;
+        float largestSpeedChange = 0;
+        for (int w = 0; w < words; w++)
+        {
+            while (_visitNow[w] != 0)
+            {
+                ulong bits = _visitNow[w];
+                int p = (w << 6) | TrailingZeros(bits);
+                _visitNow[w] = bits & (bits - 1);
+                LocalSolvesThisStep++;
+                ref ContactConstraint c = ref _constraints[_active[p]];
+                float before = c.NormalImpulse;
+                SolveContact(ref c);
+                if (c.NormalMass > 0)
+                {
+                    largestSpeedChange = MathF.Max(largestSpeedChange, MathF.Abs(c.NormalImpulse - before) / c.NormalMass);
+                }
+
+                Publish(c.A, p, drift2);
+                Publish(c.B, p, drift2);
+            }
+        }
+
+        return largestSpeedChange;
+    }
+
+    /// <summary>
+    /// If the body in <paramref name="slot"/> has drifted from what its contacts last saw, publishes its velocity and
+    /// marks its contacts to be solved again: those after <paramref name="position"/> in this sweep, the others in the next.
+    /// </summary>
+    private void Publish(int slot, int position, float drift2)
+    {
+        if (!Drifted(slot, drift2))
+        {
+            return;
+        }
+
+        _publishedLinear[slot] = _bodies[slot].Linear;
+        _publishedAngular[slot] = _bodies[slot].Angular;
+        for (int e = _contactsOfSlotStart[slot]; e < _contactsOfSlotStart[slot + 1]; e++)
+        {
+            int q = _contactsOfSlot[e];
+            if (q > position)
+            {
+                _visitNow[q >> 6] |= 1UL << (q & 63);
+            }
+            else if (q < position && (_visitNext[q >> 6] & (1UL << (q & 63))) == 0)
+            {
+                _visitNext[q >> 6] |= 1UL << (q & 63);
+                _marked++;
+            }
+        }
+    }
+
+    /// <summary>The largest change of a contact's normal velocity a full sweep would make now (the normal part of SolveContact), m/s.</summary>
+    private float LargestNormalResidual()
+    {
+        float largest = 0;
+        foreach (int k in _active.AsSpan(0, _activeCount))
+        {
+            ref ContactConstraint c = ref _constraints[k];
+            if (c.NormalMass > 0)
+            {
+                float normalVelocity = Vector3.Dot(_bodies[c.A].Linear - _bodies[c.B].Linear, c.Normal);
+                float impulse = MathF.Max(c.NormalImpulse - c.NormalMass * normalVelocity, 0f);
+                largest = MathF.Max(largest, MathF.Abs(impulse - c.NormalImpulse) / c.NormalMass);
+            }
+        }
+
+        return largest;
+    }
+
+    /// <summary>Each slot's active contacts, by their positions in the sweep (a counting sort by slot).</summary>
+    private void ListContactsOfSlots(int slots)
+    {
+        Buffers.EnsureCapacity(ref _contactsOfSlotStart, slots + 1);
+        Buffers.EnsureCapacity(ref _contactsOfSlotFill, slots);
+        Buffers.EnsureCapacity(ref _contactsOfSlot, 2 * _activeCount);
+        Array.Clear(_contactsOfSlotStart, 0, slots + 1);
+        for (int p = 0; p < _activeCount; p++)
+        {
+            ref ContactConstraint c = ref _constraints[_active[p]];
+            _contactsOfSlotStart[c.A + 1]++;
+            _contactsOfSlotStart[c.B + 1]++;
+        }
+
+        for (int s = 0; s < slots; s++)
+        {
+            _contactsOfSlotStart[s + 1] += _contactsOfSlotStart[s];
+            _contactsOfSlotFill[s] = _contactsOfSlotStart[s];
+        }
+
+        for (int p = 0; p < _activeCount; p++)
+        {
+            ref ContactConstraint c = ref _constraints[_active[p]];
+            _contactsOfSlot[_contactsOfSlotFill[c.A]++] = p;
+            _contactsOfSlot[_contactsOfSlotFill[c.B]++] = p;
+        }
+    }
+
+    private static int TrailingZeros(ulong bits)
+    {
+#if NETSTANDARD2_1
+        int count = 0;
+        while ((bits & 1) == 0)
+        {
+            bits >>= 1;
+            count++;
+        }
+
+        return count;
+#else
+        return BitOperations.TrailingZeroCount(bits);
+#endif
+    }
+}
