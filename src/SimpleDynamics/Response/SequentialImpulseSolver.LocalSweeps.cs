@@ -22,8 +22,8 @@ namespace SimpleDynamics.Response;
 /// begin only when the last fixed sweep changed at most an eighth of the bodies, and give way to full sweeps once a
 /// quarter of the contacts is to be visited again. Without those limits an 8,000-disc pour spent 2–3 times as long
 /// per step while it landed (every body moving). Measured in the settled 16,000-disc pit in a state where full sweeps
-/// did not converge (98 sweeps a step, 72–83 ms a step): the local sweeps visited 4 % of the contacts a full sweep
-/// would, the step took 42–48 ms, and the pile then converged within its fixed sweeps (35 ms a step).</para>
+/// did not converge (98 sweeps a step): 99–100 ms a step with full sweeps, 57 ms with these, which visited 0.3 % of
+/// the contacts full sweeps would (benchmarks/README.md, 2026-12-03, evening).</para>
 /// </remarks>
 public sealed partial class SequentialImpulseSolver
 {
