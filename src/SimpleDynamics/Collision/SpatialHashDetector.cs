@@ -49,7 +49,6 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
     private int[] _bucketStart = new int[InitialBuckets + 1];
     private int[] _oversized = new int[InitialOversized];
     private int _oversizedCount;
-    private Vector3 _lowest, _highest; // the corners of the box around every body's sphere (GatherBounds)
     private bool _dense; // whether this call numbers cells as a dense grid (PrepareBuckets)
     private Cell _gridLow; // the dense grid's first cell, and its size in cells along x and y
     private int _gridColumns, _gridRows;
@@ -75,9 +74,9 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
             return;
         }
 
-        Vector3 inverseCellSize = GatherBounds(bodies, 0.5f * margin, lookahead);
+        Vector3 inverseCellSize = GatherBounds(bodies, 0.5f * margin, lookahead, out Vector3 lowest, out Vector3 highest);
         int entryCount = LastEntryCount = CountEntries(n, inverseCellSize);
-        int lastBucket = PrepareBuckets(entryCount, inverseCellSize);
+        int lastBucket = PrepareBuckets(entryCount, inverseCellSize, lowest, highest);
         FillBuckets(n, lastBucket);
         FindPairsInBuckets(bodies, lastBucket, collisions, margin, lookahead);
         FindPairsWithOversized(bodies, collisions, margin, lookahead);
@@ -113,9 +112,10 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
     /// the lookahead, so that every pair the exact test may accept shares a cell. Returns the inverse cell size
     /// along each axis: 0 along an axis the bodies' boxes span no more than two cells of (all of them share one
     /// layer of cells there), so that a flat world, a 2-D one in the plane z = 0 above all, is not entered
-    /// twice, once in each of two layers that its boxes straddle.
+    /// twice, once in each of two layers that its boxes straddle. <paramref name="lowest"/> and
+    /// <paramref name="highest"/> are the corners of the box around every body's sphere.
     /// </summary>
-    private Vector3 GatherBounds(ReadOnlySpan<RigidBody> bodies, float halfMargin, float lookahead)
+    private Vector3 GatherBounds(ReadOnlySpan<RigidBody> bodies, float halfMargin, float lookahead, out Vector3 lowest, out Vector3 highest)
     {
         Buffers.EnsureCapacity(ref _bounds, bodies.Length);
         double radiusSum = 0;
@@ -136,8 +136,8 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
             high = Vector3.Max(high, c + new Vector3(reach));
         }
 
-        _lowest = low;
-        _highest = high;
+        lowest = low;
+        highest = high;
 
         float cellSize = (float)(2 * radiusSum / bodies.Length);
         Vector3 extent = high - low;
@@ -181,7 +181,7 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
     /// at least twice the entries, and the last bucket's number masks the hash; as a dense grid, one per cell of the
     /// box around all bodies, when those are no more (see the remarks).
     /// </summary>
-    private int PrepareBuckets(int entryCount, Vector3 inverseCellSize)
+    private int PrepareBuckets(int entryCount, Vector3 inverseCellSize, Vector3 lowest, Vector3 highest)
     {
         int buckets = 16;
         while (buckets < 2 * entryCount)
@@ -189,7 +189,7 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
             buckets <<= 1;
         }
 
-        Cell low = CellOf(_lowest, inverseCellSize), high = CellOf(_highest, inverseCellSize);
+        Cell low = CellOf(lowest, inverseCellSize), high = CellOf(highest, inverseCellSize);
         long columns = high.X - low.X + 1L, rows = high.Y - low.Y + 1L, layers = high.Z - low.Z + 1L;
         _dense = columns * rows <= buckets && columns * rows * layers <= buckets; // in that order, so it cannot overflow
         if (_dense)

@@ -155,13 +155,7 @@ public sealed partial class SequentialImpulseSolver
                 _visitNow[w] = bits & (bits - 1);
                 LocalSolvesThisStep++;
                 ref ContactConstraint c = ref _constraints[_active[p]];
-                float before = c.NormalImpulse;
-                SolveContact(ref c);
-                if (c.NormalMass > 0)
-                {
-                    largestSpeedChange = MathF.Max(largestSpeedChange, MathF.Abs(c.NormalImpulse - before) / c.NormalMass);
-                }
-
+                largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(ref c, out _));
                 Publish(c.A, p, drift2);
                 Publish(c.B, p, drift2);
             }
