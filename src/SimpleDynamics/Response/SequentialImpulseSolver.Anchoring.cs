@@ -35,9 +35,7 @@ public sealed partial class SequentialImpulseSolver
     private const int AnchorLevels = 64;
 
     private int[] _anchorDistance = new int[InitialCapacity]; // per slot
-    private int[] _touchingStart = new int[InitialCapacity]; // per slot + 1: where its touching contacts begin in _touching
-    private int[] _touchingFill = new int[InitialCapacity];
-    private int[] _touching = new int[InitialCapacity]; // per touching contact, twice: the contact, listed under each end
+    private readonly ContactsOfBodies _touching = new(); // each slot's touching contacts (ListTouchingContacts)
     private int[] _anchorQueue = new int[InitialCapacity];
 
     private void PropagateFromAnchors(int count, int slots)
@@ -56,7 +54,7 @@ public sealed partial class SequentialImpulseSolver
         int head = 0, tail = 0;
         for (int s = 0; s < slots; s++)
         {
-            bool anchor = _bodies[s].InverseMass == 0 && _touchingStart[s + 1] > _touchingStart[s];
+            bool anchor = _bodies[s].InverseMass == 0 && !_touching.Of(s).IsEmpty;
             _anchorDistance[s] = anchor ? 0 : int.MaxValue;
             if (anchor)
             {
@@ -73,9 +71,9 @@ public sealed partial class SequentialImpulseSolver
                 continue;
             }
 
-            for (int e = _touchingStart[u]; e < _touchingStart[u + 1]; e++)
+            foreach (int k in _touching.Of(u))
             {
-                ref ContactConstraint c = ref _constraints[_touching[e]];
+                ref ContactConstraint c = ref _constraints[k];
                 int v = c.A == u ? c.B : c.A;
                 if (_anchorDistance[v] == int.MaxValue)
                 {
@@ -97,33 +95,23 @@ public sealed partial class SequentialImpulseSolver
     /// </summary>
     private void ListTouchingContacts(int count, int slots, bool everyContact)
     {
-        Buffers.EnsureCapacity(ref _touchingStart, slots + 1);
-        Buffers.EnsureCapacity(ref _touchingFill, slots);
-        Buffers.EnsureCapacity(ref _touching, 2 * count);
-        Array.Clear(_touchingStart, 0, slots + 1);
+        _touching.BeginCounting(slots);
         for (int k = 0; k < count; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
             if (IsListed(ref c, everyContact))
             {
-                _touchingStart[c.A + 1]++;
-                _touchingStart[c.B + 1]++;
+                _touching.Count(c.A, c.B);
             }
         }
 
-        for (int s = 0; s < slots; s++)
-        {
-            _touchingStart[s + 1] += _touchingStart[s];
-            _touchingFill[s] = _touchingStart[s];
-        }
-
+        _touching.BeginListing();
         for (int k = 0; k < count; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
             if (IsListed(ref c, everyContact))
             {
-                _touching[_touchingFill[c.A]++] = k;
-                _touching[_touchingFill[c.B]++] = k;
+                _touching.List(c.A, c.B, k);
             }
         }
     }

@@ -27,14 +27,10 @@ namespace SimpleDynamics.Response;
 /// </remarks>
 public sealed partial class SequentialImpulseSolver
 {
-    private int[] _contactsOfSlotStart = new int[InitialCapacity]; // per slot + 1: where its active contacts begin
-    private int[] _contactsOfSlotFill = new int[InitialCapacity];
-    private int[] _contactsOfSlot = new int[InitialCapacity]; // positions in _active, listed under both bodies
+    private readonly ContactsOfBodies _activeOfBodies = new(); // positions in _active, listed under both bodies
+    private readonly ContactMarks _velocityMarks = new();
     private Vector3[] _publishedLinear = new Vector3[InitialCapacity]; // per slot: the velocity its contacts were last solved with
     private Vector3[] _publishedAngular = new Vector3[InitialCapacity];
-    private ulong[] _visitNow = new ulong[InitialCapacity]; // bit p: visit _active[p] in this sweep
-    private ulong[] _visitNext = new ulong[InitialCapacity]; // bit p: visit _active[p] in the next sweep
-    private int _marked; // contacts marked for the next sweep so far
 
     /// <summary>Sweeps of the step begun last that visited only the contacts of changed bodies, for tests.</summary>
     internal int LocalSweepsThisStep { get; private set; }
@@ -89,13 +85,8 @@ public sealed partial class SequentialImpulseSolver
             return 0; // moving all over: sweeping everything is cheaper than keeping track
         }
 
-        ListContactsOfSlots(slots);
-        int words = (_activeCount + 63) >> 6;
-        Buffers.EnsureCapacity(ref _visitNow, words);
-        Buffers.EnsureCapacity(ref _visitNext, words);
-        Array.Clear(_visitNow, 0, words);
-        Array.Clear(_visitNext, 0, words);
-        _marked = 0;
+        ListActiveContactsOfSlots(slots);
+        _velocityMarks.Begin(_activeCount);
         for (int s = 1; s < slots; s++)
         {
             Publish(s, position: -1, drift * drift); // every contact of a changed body, in the first sweep
@@ -103,8 +94,7 @@ public sealed partial class SequentialImpulseSolver
 
         for (int sweep = 1; sweep <= budget; sweep++)
         {
-            _marked = 0;
-            if (SweepMarked(words, drift * drift) <= _convergenceTolerance * speedScale)
+            if (SweepMarked(drift * drift) <= _convergenceTolerance * speedScale)
             {
                 converged = true;
                 if (MeasureResidualAfterLocalSweeps)
@@ -115,13 +105,12 @@ public sealed partial class SequentialImpulseSolver
                 return sweep;
             }
 
-            if (_marked > _activeCount / 4)
+            if (_velocityMarks.MarkedForNext > _activeCount / 4)
             {
                 return sweep; // the change has spread: the remaining sweeps go over every contact
             }
 
-            (_visitNow, _visitNext) = (_visitNext, _visitNow);
-            Array.Clear(_visitNext, 0, words);
+            _velocityMarks.NextSweep();
         }
 
         return budget;
@@ -141,24 +130,18 @@ public sealed partial class SequentialImpulseSolver
     /// contacts, the later ones for this sweep and the earlier ones for the next. Returns the largest change of a
     /// contact's normal velocity.
     /// </summary>
-    private float SweepMarked(int words, float drift2)
+    private float SweepMarked(float drift2)
     {
         SweepsThisStep++;
         LocalSweepsThisStep++;
         float largestSpeedChange = 0;
-        for (int w = 0; w < words; w++)
+        while (_velocityMarks.TryTake(out int p))
         {
-            while (_visitNow[w] != 0)
-            {
-                ulong bits = _visitNow[w];
-                int p = (w << 6) | TrailingZeros(bits);
-                _visitNow[w] = bits & (bits - 1);
-                LocalSolvesThisStep++;
-                ref ContactConstraint c = ref _constraints[_active[p]];
-                largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(ref c, out _));
-                Publish(c.A, p, drift2);
-                Publish(c.B, p, drift2);
-            }
+            LocalSolvesThisStep++;
+            ref ContactConstraint c = ref _constraints[_active[p]];
+            largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(ref c, out _));
+            Publish(c.A, p, drift2);
+            Publish(c.B, p, drift2);
         }
 
         return largestSpeedChange;
@@ -177,19 +160,7 @@ public sealed partial class SequentialImpulseSolver
 
         _publishedLinear[slot] = _bodies[slot].Linear;
         _publishedAngular[slot] = _bodies[slot].Angular;
-        for (int e = _contactsOfSlotStart[slot]; e < _contactsOfSlotStart[slot + 1]; e++)
-        {
-            int q = _contactsOfSlot[e];
-            if (q > position)
-            {
-                _visitNow[q >> 6] |= 1UL << (q & 63);
-            }
-            else if (q < position && (_visitNext[q >> 6] & (1UL << (q & 63))) == 0)
-            {
-                _visitNext[q >> 6] |= 1UL << (q & 63);
-                _marked++;
-            }
-        }
+        _velocityMarks.MarkAround(_activeOfBodies.Of(slot), position);
     }
 
     /// <summary>The largest change of a contact's normal velocity a full sweep would make now (the normal part of SolveContact), m/s.</summary>
@@ -210,47 +181,21 @@ public sealed partial class SequentialImpulseSolver
         return largest;
     }
 
-    /// <summary>Each slot's active contacts, by their positions in the sweep (a counting sort by slot).</summary>
-    private void ListContactsOfSlots(int slots)
+    /// <summary>Lists each slot's active contacts by their positions in the sweep.</summary>
+    private void ListActiveContactsOfSlots(int slots)
     {
-        Buffers.EnsureCapacity(ref _contactsOfSlotStart, slots + 1);
-        Buffers.EnsureCapacity(ref _contactsOfSlotFill, slots);
-        Buffers.EnsureCapacity(ref _contactsOfSlot, 2 * _activeCount);
-        Array.Clear(_contactsOfSlotStart, 0, slots + 1);
+        _activeOfBodies.BeginCounting(slots);
         for (int p = 0; p < _activeCount; p++)
         {
             ref ContactConstraint c = ref _constraints[_active[p]];
-            _contactsOfSlotStart[c.A + 1]++;
-            _contactsOfSlotStart[c.B + 1]++;
+            _activeOfBodies.Count(c.A, c.B);
         }
 
-        for (int s = 0; s < slots; s++)
-        {
-            _contactsOfSlotStart[s + 1] += _contactsOfSlotStart[s];
-            _contactsOfSlotFill[s] = _contactsOfSlotStart[s];
-        }
-
+        _activeOfBodies.BeginListing();
         for (int p = 0; p < _activeCount; p++)
         {
             ref ContactConstraint c = ref _constraints[_active[p]];
-            _contactsOfSlot[_contactsOfSlotFill[c.A]++] = p;
-            _contactsOfSlot[_contactsOfSlotFill[c.B]++] = p;
+            _activeOfBodies.List(c.A, c.B, p);
         }
-    }
-
-    private static int TrailingZeros(ulong bits)
-    {
-#if NETSTANDARD2_1
-        int count = 0;
-        while ((bits & 1) == 0)
-        {
-            bits >>= 1;
-            count++;
-        }
-
-        return count;
-#else
-        return BitOperations.TrailingZeroCount(bits);
-#endif
     }
 }

@@ -30,22 +30,28 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
 
         ShrinkBodies(InitialCapacity);
         ShrinkContacts(InitialCapacity);
+        ShrinkLists(InitialCapacity, InitialCapacity);
         _heightOrder.TrimExcess();
     }
 
     /// <summary>Applies the <see cref="ShrinkPolicy"/> at the end of each step; the world's contact cache applies it itself.</summary>
     private void ShrinkIdleBuffers(int bodies, int contacts)
     {
-        int room = _bodyRoom.Observe(bodies + 1, _bodies.Length, InitialCapacity); // slot 0 is the ground
-        if (room > 0)
+        int bodyRoom = _bodyRoom.Observe(bodies + 1, _bodies.Length, InitialCapacity); // slot 0 is the ground
+        if (bodyRoom > 0)
         {
-            ShrinkBodies(room);
+            ShrinkBodies(bodyRoom);
         }
 
-        room = _contactRoom.Observe(contacts, _constraints.Length, InitialCapacity);
+        int room = _contactRoom.Observe(contacts, _constraints.Length, InitialCapacity);
         if (room > 0)
         {
             ShrinkContacts(room);
+        }
+
+        if (bodyRoom > 0 || room > 0)
+        {
+            ShrinkLists(bodyRoom > 0 ? bodyRoom : _bodies.Length, room > 0 ? room : _constraints.Length);
         }
 
         _heightOrder.ShrinkIfIdle();
@@ -60,14 +66,10 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _bodyOrder, capacity, 0);
         Buffers.ShrinkTo(ref _publishedLinear, capacity, 0);
         Buffers.ShrinkTo(ref _publishedAngular, capacity, 0);
-        Buffers.ShrinkTo(ref _contactsOfSlotStart, capacity + 1, 0);
-        Buffers.ShrinkTo(ref _contactsOfSlotFill, capacity, 0);
         Buffers.ShrinkTo(ref _slotOf, capacity, 0);
         Buffers.ShrinkTo(ref _bodyHeights, capacity, 0);
         Buffers.ShrinkTo(ref _anchorDistance, capacity, 0);
         Buffers.ShrinkTo(ref _anchorQueue, capacity, 0);
-        Buffers.ShrinkTo(ref _touchingStart, capacity + 1, 0);
-        Buffers.ShrinkTo(ref _touchingFill, capacity, 0);
         Buffers.ShrinkTo(ref _corrections, capacity, 0);
     }
 
@@ -78,11 +80,15 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _heights, capacity, 0);
         Buffers.ShrinkTo(ref _ties, capacity, 0);
         Buffers.ShrinkTo(ref _active, capacity, 0);
-        Buffers.ShrinkTo(ref _touching, 2 * capacity, 0);
-        Buffers.ShrinkTo(ref _contactsOfSlot, 2 * capacity, 0);
-        Buffers.ShrinkTo(ref _visitNow, (capacity + 63) >> 6, 0);
-        Buffers.ShrinkTo(ref _visitNext, (capacity + 63) >> 6, 0);
         Buffers.ShrinkTo(ref _deepQueue, capacity, 0);
         Buffers.ShrinkTo(ref _queued, capacity, 0);
+    }
+
+    /// <summary>The per-body contact lists and the sweep marks, to <paramref name="slots"/> bodies and <paramref name="contacts"/> contacts.</summary>
+    private void ShrinkLists(int slots, int contacts)
+    {
+        _activeOfBodies.Shrink(slots, contacts);
+        _touching.Shrink(slots, contacts);
+        _velocityMarks.Shrink(contacts);
     }
 }

@@ -117,9 +117,8 @@ public sealed partial class SequentialImpulseSolver
             return;
         }
 
-        for (int e = _touchingStart[slot]; e < _touchingStart[slot + 1]; e++)
+        foreach (int k in _touching.Of(slot))
         {
-            int k = _touching[e];
             if (!_queued[k] && Depth(ref _constraints[k], out _) > deep)
             {
                 _queued[k] = true;

@@ -1,0 +1,114 @@
+using System;
+using System.Numerics;
+
+namespace SimpleDynamics.Response;
+
+/// <summary>
+/// Which contacts a Gauss–Seidel sweep that visits only what can still change has left to visit, by their positions
+/// in the sweep: one bit each for this sweep and one for the next. A contact whose body has just been changed by the
+/// contact at position p is marked for this sweep if it comes after p (it has not seen the change yet and its turn
+/// is still to come), else for the next.
+/// </summary>
+internal sealed class ContactMarks
+{
+    private ulong[] _now = new ulong[1];
+    private ulong[] _next = new ulong[1];
+    private int _words;
+    private int _word; // the sweep's cursor: no bit before this word is set
+
+    /// <summary>Contacts marked for the next sweep since this one began.</summary>
+    public int MarkedForNext { get; private set; }
+
+    /// <summary>Starts with nothing marked, for a sweep over <paramref name="count"/> positions.</summary>
+    public void Begin(int count)
+    {
+        _words = (count + 63) >> 6;
+        Buffers.EnsureCapacity(ref _now, _words);
+        Buffers.EnsureCapacity(ref _next, _words);
+        Array.Clear(_now, 0, _words);
+        Array.Clear(_next, 0, _words);
+        _word = 0;
+        MarkedForNext = 0;
+    }
+
+    /// <summary>
+    /// Marks the contacts at <paramref name="positions"/> (the contacts of a body just changed by the contact at
+    /// <paramref name="position"/>, −1 before the sweep begins): those after it for this sweep, those before it for the next.
+    /// </summary>
+    public void MarkAround(ReadOnlySpan<int> positions, int position)
+    {
+        foreach (int q in positions)
+        {
+            if (q > position)
+            {
+                _now[q >> 6] |= 1UL << (q & 63);
+            }
+            else if (q < position)
+            {
+                MarkForNext(q);
+            }
+        }
+    }
+
+    /// <summary>Marks the contact at <paramref name="position"/> for the next sweep.</summary>
+    public void MarkForNext(int position)
+    {
+        ulong bit = 1UL << (position & 63);
+        if ((_next[position >> 6] & bit) == 0)
+        {
+            _next[position >> 6] |= bit;
+            MarkedForNext++;
+        }
+    }
+
+    /// <summary>Takes the next position marked for this sweep, in order; false when none is left.</summary>
+    public bool TryTake(out int position)
+    {
+        for (; _word < _words; _word++)
+        {
+            ulong bits = _now[_word];
+            if (bits != 0)
+            {
+                position = (_word << 6) | TrailingZeros(bits);
+                _now[_word] = bits & (bits - 1);
+                return true;
+            }
+        }
+
+        position = -1;
+        return false;
+    }
+
+    /// <summary>Begins the next sweep: what was marked for it is now to visit.</summary>
+    public void NextSweep()
+    {
+        (_now, _next) = (_next, _now);
+        Array.Clear(_next, 0, _words);
+        _word = 0;
+        MarkedForNext = 0;
+    }
+
+    /// <summary>Shrinks the room kept to <paramref name="contacts"/> positions (see <see cref="Buffers.ShrinkTo{T}"/>).</summary>
+    public void Shrink(int contacts)
+    {
+        Buffers.ShrinkTo(ref _now, (contacts + 63) >> 6, 0);
+        Buffers.ShrinkTo(ref _next, (contacts + 63) >> 6, 0);
+        _words = 0;
+    }
+
+    private static int TrailingZeros(ulong bits)
+    {
+#if NETSTANDARD2_1
+        int count = 0;
+        while ((bits & 1) == 0)
+        {
+            bits >>= 1;
+            count++;
+        }
+
+        return count;
+#else
+        return BitOperations.TrailingZeroCount(bits);
+#endif
+    }
+}
