@@ -66,6 +66,7 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _bodyOrder, capacity, 0);
         Buffers.ShrinkTo(ref _publishedLinear, capacity, 0);
         Buffers.ShrinkTo(ref _publishedAngular, capacity, 0);
+        Buffers.ShrinkTo(ref _publishedPositions, capacity, 0);
         Buffers.ShrinkTo(ref _slotOf, capacity, 0);
         Buffers.ShrinkTo(ref _bodyHeights, capacity, 0);
         Buffers.ShrinkTo(ref _anchorDistance, capacity, 0);
@@ -89,6 +90,8 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
     {
         _activeOfBodies.Shrink(slots, contacts);
         _touching.Shrink(slots, contacts);
+        _positionContactsOfBodies.Shrink(slots, contacts);
         _velocityMarks.Shrink(contacts);
+        _positionMarks.Shrink(contacts);
     }
 }

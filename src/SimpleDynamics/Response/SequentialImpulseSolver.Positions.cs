@@ -5,8 +5,43 @@ using SimpleDynamics.Bodies;
 namespace SimpleDynamics.Response;
 
 /// <summary>The position pass: the projection of listing 2 as non-linear Gauss–Seidel sweeps.</summary>
+/// <remarks>
+/// <para>In every substep but a step's last, only the first sweep visits every contact. A contact that a sweep leaves
+/// within the slop, and whose bodies nothing moves after it, would be measured again by the next sweep at the very
+/// same positions and corrected by nothing again. So the later sweeps visit, still in order, only the contacts that a
+/// sweep left deeper than the slop by more than <see cref="PositionDrift"/> of it, and those of bodies that corrections
+/// have moved by more than that since their contacts last saw them (<see cref="ContactMarks"/>; the body's position is
+/// then "published" again, as the local velocity sweeps publish velocities). What is left out is at most that much
+/// depth, 5 µm against the slop's 0.5 mm, and the next substep's sweeps take it. A settled pile corrects thousands of
+/// contacts per sweep by less than a micrometre each (measured in the settled 1,000-disc 2-D pit: 16 % of the contacts
+/// visited are corrected, three quarters of those by less than 0.5 µm, 2 % of the visits by more than 5 µm), and full
+/// sweeps would visit every contact again for them. Measured there and at 4,000 discs, switching every 30 steps: the
+/// sweeps visit half as many contacts, and a step takes 5 % (1,000) and 11 % (4,000) less time. With no drift allowed
+/// the marks saved no time: too many contacts move by a little.</para>
+/// <para>The last substep sweeps every contact, so that a step ends within the slop exactly as full sweeps end it (the
+/// world laws hold nobody deeper than the slop at the end of every step). While more than a quarter of the contacts
+/// is to be visited again (a pile landing), the sweeps go over every contact without keeping track.</para>
+/// </remarks>
 public sealed partial class SequentialImpulseSolver
 {
+    private readonly ContactsOfBodies _positionContactsOfBodies = new(); // contact indices, for the marked position sweeps
+    private readonly ContactMarks _positionMarks = new();
+    private int _positionListsCount = -1; // the contacts the lists above were made for this step (−1: none yet)
+
+    private Vector3[] _publishedPositions = new Vector3[InitialCapacity]; // per slot: where its contacts last saw it
+
+    /// <summary>For tests: position sweeps go over every contact, as without <see cref="ContactMarks"/>.</summary>
+    internal bool FullPositionSweeps { get; set; }
+
+    /// <summary>
+    /// The depth, as a fraction of <see cref="Slop"/>, that the later position sweeps of a substep before a step's last
+    /// may leave uncorrected (see the remarks above): 1 %. With 0 they do exactly what full sweeps would, bit for bit (tested).
+    /// </summary>
+    internal float PositionDrift { get; set; } = 0.01f;
+
+    /// <summary>Contacts the position sweeps of the step begun last visited, for tests.</summary>
+    internal long PositionVisitsThisStep { get; private set; }
+
     private void CorrectPositions(ReadOnlySpan<RigidBody> bodies, int count)
     {
         if (_positionIterations == 0 || count == 0)
@@ -20,12 +55,35 @@ public sealed partial class SequentialImpulseSolver
         }
 
         count = Math.Min(count, _prepared);
-        for (int iteration = 0; iteration < _positionIterations; iteration++)
+        bool tracking = !FullPositionSweeps && !_step!.IsLastSubstep; // a step ends as full sweeps end it (see above)
+        if (tracking)
+        {
+            ListContactsOfBodies(count, bodies.Length + 1);
+            _positionMarks.Begin(count);
+            Buffers.EnsureCapacity(ref _publishedPositions, bodies.Length + 1);
+            Array.Copy(_positions, _publishedPositions, bodies.Length + 1);
+        }
+
+        // The first sweep and, while they are many, the contacts to visit again: every contact.
+        int iteration = 0;
+        for (; iteration < _positionIterations && (iteration == 0 || !tracking); iteration++)
         {
             for (int k = 0; k < count; k++)
             {
-                CorrectPosition(ref _constraints[k], shock: false, _correctionFactor);
+                CorrectPositionAt(k, shock: false, _correctionFactor, tracking);
             }
+
+            tracking &= NextPositionSweep(count);
+        }
+
+        for (; iteration < _positionIterations; iteration++)
+        {
+            while (_positionMarks.TryTake(out int k))
+            {
+                CorrectPositionAt(k, shock: false, _correctionFactor, tracking: true);
+            }
+
+            _positionMarks.NextSweep();
         }
 
         // A last sweep removes the whole depth beyond the slop: under gravity, contacts that carry weight (normal
@@ -34,10 +92,10 @@ public sealed partial class SequentialImpulseSolver
         // A settled pile corrects next to nothing here; a jam against a wall corrects a sideways contact by much more,
         // and only then can the walk from what cannot move have anything to do.
         bool sidewaysCorrected = false, corrected = false;
-        for (int k = 0; k < count; k++)
+        for (int k = tracking ? NextMarked() : 0; k < count; k = tracking ? NextMarked() : k + 1)
         {
             ref ContactConstraint c = ref _constraints[k];
-            float correction = CorrectPosition(ref c, shock: c.CarriesWeight, factor: 1f);
+            float correction = CorrectPositionAt(k, shock: c.CarriesWeight, factor: 1f, tracking);
             sidewaysCorrected |= !c.CarriesWeight && correction > 0.01f * _slop;
             corrected |= correction > 0.01f * _slop;
         }
@@ -61,15 +119,98 @@ public sealed partial class SequentialImpulseSolver
         }
     }
 
+    /// <summary>The next contact marked for this position sweep, or int.MaxValue when none is left.</summary>
+    private int NextMarked() => _positionMarks.TryTake(out int k) ? k : int.MaxValue;
+
+    /// <summary>
+    /// Ends a full position sweep: whether the next may visit only the marked contacts (at most a quarter of them are
+    /// marked; else the rest of the pass goes over every contact, and stops keeping track).
+    /// </summary>
+    private bool NextPositionSweep(int count)
+    {
+        bool few = _positionMarks.MarkedForNext <= count / 4;
+        _positionMarks.NextSweep();
+        return few;
+    }
+
+    /// <summary>
+    /// <see cref="CorrectPosition"/> for contact <paramref name="k"/>; with <paramref name="tracking"/>, marks the
+    /// contact for the next sweep if it is left deeper than the slop by more than the drift allowed, and the contacts
+    /// of each body the correction has moved by more than that since it was last published, for this sweep (after k)
+    /// or the next (before k).
+    /// </summary>
+    private float CorrectPositionAt(int k, bool shock, float factor, bool tracking)
+    {
+        PositionVisitsThisStep++;
+        ref ContactConstraint c = ref _constraints[k];
+        float correction = CorrectPosition(ref c, shock, factor, out float excess);
+        if (tracking && correction > 0)
+        {
+            float drift = PositionDrift * _slop;
+            if (excess - correction >= drift)
+            {
+                _positionMarks.MarkForNext(k);
+            }
+
+            if (shock ? c.AIsUpper : _bodies[c.A].InverseMass > 0)
+            {
+                PublishPosition(c.A, k, drift);
+            }
+
+            if (shock ? !c.AIsUpper : _bodies[c.B].InverseMass > 0)
+            {
+                PublishPosition(c.B, k, drift);
+            }
+        }
+
+        return correction;
+    }
+
+    /// <summary>
+    /// If the body in <paramref name="slot"/> has moved by more than <paramref name="drift"/> since its contacts last
+    /// saw it, publishes its position and marks its contacts around contact <paramref name="k"/>.
+    /// </summary>
+    private void PublishPosition(int slot, int k, float drift)
+    {
+        if (Vector3.DistanceSquared(_positions[slot], _publishedPositions[slot]) > drift * drift)
+        {
+            _publishedPositions[slot] = _positions[slot];
+            _positionMarks.MarkAround(_positionContactsOfBodies.Of(slot), k);
+        }
+    }
+
+    /// <summary>Lists each body's contacts, once a step (and again if the impact pass has added contacts since).</summary>
+    private void ListContactsOfBodies(int count, int slots)
+    {
+        if (_positionListsCount == count)
+        {
+            return;
+        }
+
+        _positionListsCount = count;
+        _positionContactsOfBodies.BeginCounting(slots);
+        for (int k = 0; k < count; k++)
+        {
+            _positionContactsOfBodies.Count(_constraints[k].A, _constraints[k].B);
+        }
+
+        _positionContactsOfBodies.BeginListing();
+        for (int k = 0; k < count; k++)
+        {
+            _positionContactsOfBodies.List(_constraints[k].A, _constraints[k].B, k);
+        }
+    }
+
     /// <summary>
     /// Listing 2 as a Gauss–Seidel position sweep: measure the contact at the current positions and push the
     /// bodies apart along the normal, split by inverse mass, by a bounded share of the depth beyond the slop. With
     /// <paramref name="shock"/> (the last, bottom-up sweep under gravity) the whole depth beyond the slop is removed
     /// by moving the upper body alone. <paramref name="factor"/> is the share of the excess depth removed. Returns the
-    /// depth removed (0 when none).
+    /// depth removed (0 when none), and gives the depth beyond the slop it found (0 when it did not measure it).
     /// </summary>
-    private float CorrectPosition(ref ContactConstraint c, bool shock, float factor)
+    private float CorrectPosition(ref ContactConstraint c, bool shock, float factor, out float excess)
     {
+        excess = 0;
         float inverseMassA = _bodies[c.A].InverseMass, inverseMassB = _bodies[c.B].InverseMass;
         if (shock)
         {
@@ -88,8 +229,8 @@ public sealed partial class SequentialImpulseSolver
             return 0;
         }
 
-        float penetration = Depth(ref c, out Vector3 normal);
-        float correction = shock ? penetration - _slop : MathF.Min(factor * (penetration - _slop), _maxCorrection);
+        excess = Depth(ref c, out Vector3 normal) - _slop;
+        float correction = shock ? excess : MathF.Min(factor * excess, _maxCorrection);
         if (correction <= 0)
         {
             return 0;

@@ -270,6 +270,8 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
         SweepsThisStep = 0;
         LocalSweepsThisStep = 0;
         LocalSolvesThisStep = 0;
+        PositionVisitsThisStep = 0;
+        _positionListsCount = -1; // the contacts are new: list them again (SequentialImpulseSolver.Positions.cs)
         PrepareConstraints(contacts);
     }
 
