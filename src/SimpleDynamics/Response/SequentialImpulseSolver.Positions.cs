@@ -9,18 +9,21 @@ namespace SimpleDynamics.Response;
 /// <para>In every substep but a step's last, only the first sweep visits every contact. A contact that a sweep leaves
 /// within the slop, and whose bodies nothing moves after it, would be measured again by the next sweep at the very
 /// same positions and corrected by nothing again. So the later sweeps visit, still in order, only the contacts that a
-/// sweep left deeper than the slop by more than <see cref="PositionDrift"/> of it, and those of bodies that corrections
+/// sweep left deeper than the slop by <see cref="PositionDrift"/> of it or more, and those of bodies that corrections
 /// have moved by more than that since their contacts last saw them (<see cref="ContactMarks"/>; the body's position is
-/// then "published" again, as the local velocity sweeps publish velocities). What is left out is at most that much
-/// depth, 5 µm against the slop's 0.5 mm, and the next substep's sweeps take it. A settled pile corrects thousands of
-/// contacts per sweep by less than a micrometre each (measured in the settled 1,000-disc 2-D pit: 16 % of the contacts
-/// visited are corrected, three quarters of those by less than 0.5 µm, 2 % of the visits by more than 5 µm), and full
-/// sweeps would visit every contact again for them. Measured there and at 4,000 discs, switching every 30 steps: the
-/// sweeps visit half as many contacts, and a step takes 5 % (1,000) and 11 % (4,000) less time. With no drift allowed
-/// the marks saved no time: too many contacts move by a little.</para>
-/// <para>The last substep sweeps every contact, so that a step ends within the slop exactly as full sweeps end it (the
-/// world laws hold nobody deeper than the slop at the end of every step). While more than a quarter of the contacts
-/// is to be visited again (a pile landing), the sweeps go over every contact without keeping track.</para>
+/// then "published" again, as the local velocity sweeps publish velocities). What a contact is left with beyond the
+/// slop is then less than that drift, plus twice the drift for each of its bodies (each stays within the drift of where
+/// it was published): 25 µm at most against the slop's 0.5 mm, and the next substep's sweeps take it. A settled pile corrects thousands of contacts per sweep by less than a
+/// micrometre each (measured in the settled 1,000-disc 2-D pit: 16 % of the contacts visited are corrected, three
+/// quarters of those by less than 0.5 µm, 2 % of the visits by more than 5 µm), and full sweeps would visit every
+/// contact again for them. Measured there and at 4,000 discs, switching every 30 steps: the sweeps visit half as many
+/// contacts, and a step takes 5 % (1,000) and 13 % (4,000) less time. With no drift allowed the marks saved no time:
+/// too many contacts move by a little.</para>
+/// <para>The first sweep marks only the contacts it leaves deep; the bodies it moved are looked at after it, and only
+/// when no more than an eighth of them moved by more than the drift (and then at most a quarter of the contacts is to
+/// be visited again) do the later sweeps keep track: a pile still landing moves most of its bodies, and full sweeps
+/// serve it at less cost. The last substep sweeps every contact, so that a step ends within the slop exactly as full
+/// sweeps end it (the world laws hold nobody deeper than the slop at the end of every step).</para>
 /// </remarks>
 public sealed partial class SequentialImpulseSolver
 {
@@ -55,35 +58,34 @@ public sealed partial class SequentialImpulseSolver
         }
 
         count = Math.Min(count, _prepared);
+        int slots = bodies.Length + 1;
         bool tracking = !FullPositionSweeps && !_step!.IsLastSubstep; // a step ends as full sweeps end it (see above)
         if (tracking)
         {
-            ListContactsOfBodies(count, bodies.Length + 1);
             _positionMarks.Begin(count);
-            Buffers.EnsureCapacity(ref _publishedPositions, bodies.Length + 1);
-            Array.Copy(_positions, _publishedPositions, bodies.Length + 1);
+            Buffers.EnsureCapacity(ref _publishedPositions, slots);
+            Array.Copy(_positions, _publishedPositions, slots);
         }
 
-        // The first sweep and, while they are many, the contacts to visit again: every contact.
-        int iteration = 0;
-        for (; iteration < _positionIterations && (iteration == 0 || !tracking); iteration++)
+        // The first sweep visits every contact, and marks only those it leaves deep; what it moved is looked at after
+        // it, so that a pile still landing, which moves most of its bodies, pays for no tracking.
+        for (int k = 0; k < count; k++)
         {
-            for (int k = 0; k < count; k++)
-            {
-                CorrectPositionAt(k, shock: false, _correctionFactor, tracking);
-            }
-
-            tracking &= NextPositionSweep(count);
+            CorrectPositionAt(k, shock: false, _correctionFactor, markSelf: tracking, markBodies: false);
         }
 
-        for (; iteration < _positionIterations; iteration++)
+        tracking = tracking && MarkAfterFirstSweep(count, slots);
+        for (int iteration = 1; iteration < _positionIterations; iteration++)
         {
-            while (_positionMarks.TryTake(out int k))
+            for (int k = tracking ? NextMarked() : 0; k < count; k = tracking ? NextMarked() : k + 1)
             {
-                CorrectPositionAt(k, shock: false, _correctionFactor, tracking: true);
+                CorrectPositionAt(k, shock: false, _correctionFactor, tracking, tracking);
             }
 
-            _positionMarks.NextSweep();
+            if (tracking)
+            {
+                _positionMarks.NextSweep();
+            }
         }
 
         // A last sweep removes the whole depth beyond the slop: under gravity, contacts that carry weight (normal
@@ -95,7 +97,7 @@ public sealed partial class SequentialImpulseSolver
         for (int k = tracking ? NextMarked() : 0; k < count; k = tracking ? NextMarked() : k + 1)
         {
             ref ContactConstraint c = ref _constraints[k];
-            float correction = CorrectPositionAt(k, shock: c.CarriesWeight, factor: 1f, tracking);
+            float correction = CorrectPositionAt(k, shock: c.CarriesWeight, factor: 1f, markSelf: false, markBodies: tracking);
             sidewaysCorrected |= !c.CarriesWeight && correction > 0.01f * _slop;
             corrected |= correction > 0.01f * _slop;
         }
@@ -123,41 +125,60 @@ public sealed partial class SequentialImpulseSolver
     private int NextMarked() => _positionMarks.TryTake(out int k) ? k : int.MaxValue;
 
     /// <summary>
-    /// Ends a full position sweep: whether the next may visit only the marked contacts (at most a quarter of them are
-    /// marked; else the rest of the pass goes over every contact, and stops keeping track).
+    /// After the first sweep: whether the later ones may visit only what can still change, and if so marks for the
+    /// next sweep, besides the contacts the first left deep, every contact of each body it moved by more than the drift
+    /// allowed (published). Not when more than an eighth of the bodies moved that much, or a quarter of the contacts
+    /// would be visited again: a pile landing, which full sweeps serve at less cost.
     /// </summary>
-    private bool NextPositionSweep(int count)
+    private bool MarkAfterFirstSweep(int count, int slots)
     {
-        bool few = _positionMarks.MarkedForNext <= count / 4;
+        float drift = PositionDrift * _slop;
+        int moved = 0;
+        for (int s = 1; s < slots; s++)
+        {
+            moved += Vector3.DistanceSquared(_positions[s], _publishedPositions[s]) > drift * drift ? 1 : 0;
+        }
+
+        if (moved > slots / 8 || _positionMarks.MarkedForNext > count / 4)
+        {
+            return false;
+        }
+
+        ListContactsOfBodies(count, slots);
+        for (int s = 1; s < slots && _positionMarks.MarkedForNext <= count / 4; s++)
+        {
+            PublishPosition(s, int.MaxValue, drift); // before the contact at int.MaxValue: all of them, for the next sweep
+        }
+
         _positionMarks.NextSweep();
-        return few;
+        return _positionMarks.MarkedForNext <= count / 4;
     }
 
     /// <summary>
-    /// <see cref="CorrectPosition"/> for contact <paramref name="k"/>; with <paramref name="tracking"/>, marks the
-    /// contact for the next sweep if it is left deeper than the slop by more than the drift allowed, and the contacts
-    /// of each body the correction has moved by more than that since it was last published, for this sweep (after k)
-    /// or the next (before k).
+    /// <see cref="CorrectPosition"/> for contact <paramref name="k"/>. With <paramref name="markSelf"/>, marks the
+    /// contact for the next sweep if the correction leaves it deeper than the slop by the drift allowed or more; with
+    /// <paramref name="markBodies"/>, marks the contacts of each body the correction has moved by more than that since
+    /// it was last published, for this sweep (after k) or the next (before k).
     /// </summary>
-    private float CorrectPositionAt(int k, bool shock, float factor, bool tracking)
+    private float CorrectPositionAt(int k, bool shock, float factor, bool markSelf, bool markBodies)
     {
         PositionVisitsThisStep++;
         ref ContactConstraint c = ref _constraints[k];
         float correction = CorrectPosition(ref c, shock, factor, out float excess);
-        if (tracking && correction > 0)
+        if (correction > 0)
         {
             float drift = PositionDrift * _slop;
-            if (excess - correction >= drift)
+            if (markSelf && excess - correction >= drift)
             {
                 _positionMarks.MarkForNext(k);
             }
 
-            if (shock ? c.AIsUpper : _bodies[c.A].InverseMass > 0)
+            if (markBodies && (shock ? c.AIsUpper : _bodies[c.A].InverseMass > 0))
             {
                 PublishPosition(c.A, k, drift);
             }
 
-            if (shock ? !c.AIsUpper : _bodies[c.B].InverseMass > 0)
+            if (markBodies && (shock ? !c.AIsUpper : _bodies[c.B].InverseMass > 0))
             {
                 PublishPosition(c.B, k, drift);
             }
