@@ -104,12 +104,12 @@ public sealed partial class SequentialImpulseSolver
 
         if (sidewaysCorrected)
         {
-            PropagateFromAnchors(count, bodies.Length + 1); // see SequentialImpulseSolver.Anchoring.cs
+            PropagateFromAnchors(count, slots); // see SequentialImpulseSolver.Anchoring.cs
         }
 
         if (corrected && TouchesAnythingImmovable(count))
         {
-            SweepWhatStaysDeep(count, bodies.Length + 1); // see SequentialImpulseSolver.Residual.cs
+            SweepWhatStaysDeep(count, slots); // see SequentialImpulseSolver.Residual.cs
         }
 
         for (int i = 0; i < bodies.Length; i++)

@@ -71,15 +71,9 @@ public class ContactOrderTests
             {
                 other.Step(Dt);
                 Assert.Equal(reference.Collisions.Count, other.Collisions.Count);
-                for (int i = 0; i < reference.Bodies.Count; i++)
+                if (WorldMeasure.FirstDifference(reference, other) is string difference)
                 {
-                    RigidBody expected = reference.Bodies[i], actual = other.Bodies[i];
-                    if (expected.Position != actual.Position || expected.LinearVelocity != actual.LinearVelocity ||
-                        expected.AngularVelocity != actual.AngularVelocity)
-                    {
-                        Assert.Fail($"step {step + 1}, {other.Detector}: body {i} at {actual.Position} moving {actual.LinearVelocity}, " +
-                            $"not {expected.Position} moving {expected.LinearVelocity}");
-                    }
+                    Assert.Fail($"step {step + 1}, {other.Detector}: {difference}");
                 }
             }
         }

@@ -18,4 +18,22 @@ internal static class WorldMeasure
             b.Position.X >= min.X - tolerance && b.Position.X <= max.X + tolerance &&
             b.Position.Y >= min.Y - tolerance && b.Position.Y <= max.Y + tolerance &&
             b.Position.Z >= min.Z - tolerance && b.Position.Z <= max.Z + tolerance);
+
+    /// <summary>
+    /// The first body of <paramref name="actual"/> whose position, velocity or spin differs in any bit from the same
+    /// body of <paramref name="expected"/>, described; null when every body is the same.
+    /// </summary>
+    public static string? FirstDifference(World expected, World actual)
+    {
+        for (int i = 0; i < expected.Bodies.Count; i++)
+        {
+            RigidBody e = expected.Bodies[i], a = actual.Bodies[i];
+            if (a.Position != e.Position || a.LinearVelocity != e.LinearVelocity || a.AngularVelocity != e.AngularVelocity)
+            {
+                return $"body {i} at {a.Position:R} moving {a.LinearVelocity:R}, not {e.Position:R} moving {e.LinearVelocity:R}";
+            }
+        }
+
+        return null;
+    }
 }

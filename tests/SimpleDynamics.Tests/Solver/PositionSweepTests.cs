@@ -36,15 +36,9 @@ public class PositionSweepTests
             reference.Step(Dt);
             markedVisits += marked.PositionVisitsThisStep;
             fullVisits += full.PositionVisitsThisStep;
-            for (int i = 0; i < world.Bodies.Count; i++)
+            if (WorldMeasure.FirstDifference(reference, world) is string difference)
             {
-                RigidBody actual = world.Bodies[i], expected = reference.Bodies[i];
-                if (actual.Position != expected.Position || actual.LinearVelocity != expected.LinearVelocity ||
-                    actual.AngularVelocity != expected.AngularVelocity)
-                {
-                    Assert.Fail($"step {step}: body {i} at {actual.Position:R} moving {actual.LinearVelocity:R}, " +
-                        $"full sweeps {expected.Position:R} moving {expected.LinearVelocity:R}");
-                }
+                Assert.Fail($"step {step}, against full sweeps: {difference}");
             }
         }
 
