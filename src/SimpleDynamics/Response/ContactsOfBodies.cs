@@ -54,12 +54,14 @@ internal sealed class ContactsOfBodies
     /// <summary>The items listed under the body in <paramref name="slot"/>, in the order they were listed.</summary>
     public ReadOnlySpan<int> Of(int slot) => new(_items, _start[slot], _start[slot + 1] - _start[slot]);
 
-    /// <summary>Shrinks the room kept per body to <paramref name="slots"/> and per contact to <paramref name="contacts"/> (see <see cref="Buffers.ShrinkTo{T}"/>).</summary>
-    public void Shrink(int slots, int contacts)
+    /// <summary>Shrinks the room kept per body to <paramref name="slots"/> (see <see cref="Buffers.ShrinkTo{T}"/>); list again before asking.</summary>
+    public void ShrinkBodies(int slots)
     {
         Buffers.ShrinkTo(ref _start, slots + 1, 0);
         Buffers.ShrinkTo(ref _fill, slots, 0);
-        Buffers.ShrinkTo(ref _items, 2 * contacts, 0);
         _slots = 0;
     }
+
+    /// <summary>Shrinks the room kept for <paramref name="contacts"/> contacts (see <see cref="Buffers.ShrinkTo{T}"/>); list again before asking.</summary>
+    public void ShrinkContacts(int contacts) => Buffers.ShrinkTo(ref _items, 2 * contacts, 0);
 }

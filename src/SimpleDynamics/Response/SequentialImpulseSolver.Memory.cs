@@ -30,28 +30,22 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
 
         ShrinkBodies(InitialCapacity);
         ShrinkContacts(InitialCapacity);
-        ShrinkLists(InitialCapacity, InitialCapacity);
         _heightOrder.TrimExcess();
     }
 
     /// <summary>Applies the <see cref="ShrinkPolicy"/> at the end of each step; the world's contact cache applies it itself.</summary>
     private void ShrinkIdleBuffers(int bodies, int contacts)
     {
-        int bodyRoom = _bodyRoom.Observe(bodies + 1, _bodies.Length, InitialCapacity); // slot 0 is the ground
-        if (bodyRoom > 0)
+        int room = _bodyRoom.Observe(bodies + 1, _bodies.Length, InitialCapacity); // slot 0 is the ground
+        if (room > 0)
         {
-            ShrinkBodies(bodyRoom);
+            ShrinkBodies(room);
         }
 
-        int room = _contactRoom.Observe(contacts, _constraints.Length, InitialCapacity);
+        room = _contactRoom.Observe(contacts, _constraints.Length, InitialCapacity);
         if (room > 0)
         {
             ShrinkContacts(room);
-        }
-
-        if (bodyRoom > 0 || room > 0)
-        {
-            ShrinkLists(bodyRoom > 0 ? bodyRoom : _bodies.Length, room > 0 ? room : _constraints.Length);
         }
 
         _heightOrder.ShrinkIfIdle();
@@ -72,6 +66,9 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _anchorDistance, capacity, 0);
         Buffers.ShrinkTo(ref _anchorQueue, capacity, 0);
         Buffers.ShrinkTo(ref _corrections, capacity, 0);
+        _activeOfBodies.ShrinkBodies(capacity);
+        _touching.ShrinkBodies(capacity);
+        _positionContactsOfBodies.ShrinkBodies(capacity);
     }
 
     private void ShrinkContacts(int capacity)
@@ -83,15 +80,10 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _active, capacity, 0);
         Buffers.ShrinkTo(ref _deepQueue, capacity, 0);
         Buffers.ShrinkTo(ref _queued, capacity, 0);
-    }
-
-    /// <summary>The per-body contact lists and the sweep marks, to <paramref name="slots"/> bodies and <paramref name="contacts"/> contacts.</summary>
-    private void ShrinkLists(int slots, int contacts)
-    {
-        _activeOfBodies.Shrink(slots, contacts);
-        _touching.Shrink(slots, contacts);
-        _positionContactsOfBodies.Shrink(slots, contacts);
-        _velocityMarks.Shrink(contacts);
-        _positionMarks.Shrink(contacts);
+        _activeOfBodies.ShrinkContacts(capacity);
+        _touching.ShrinkContacts(capacity);
+        _positionContactsOfBodies.ShrinkContacts(capacity);
+        _velocityMarks.Shrink(capacity);
+        _positionMarks.Shrink(capacity);
     }
 }
