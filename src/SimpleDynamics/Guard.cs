@@ -39,6 +39,14 @@ internal static partial class Guard
         }
     }
 
+    public static void InRange(int value, int minimum, int maximum, string paramName)
+    {
+        if (value < minimum || value > maximum)
+        {
+            throw new ArgumentOutOfRangeException(paramName, value, $"{paramName} must lie in [{minimum}, {maximum}].");
+        }
+    }
+
     public static void Finite(Vector3 value, string paramName)
     {
         if (!Vectors.IsFinite(value))

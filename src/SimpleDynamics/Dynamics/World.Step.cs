@@ -60,6 +60,11 @@ public sealed partial class World
 
         StepContext step = _stepContext ??= new StepContext(this);
         _stepping = true;
+        if (_workers is not null)
+        {
+            _workers.Busy = true; // see ThreadCount
+        }
+
         try
         {
             step.Begin(dt, _substeps);
@@ -89,6 +94,10 @@ public sealed partial class World
         {
             step.End();
             _stepping = false;
+            if (_workers is not null)
+            {
+                _workers.Busy = false;
+            }
         }
     }
 

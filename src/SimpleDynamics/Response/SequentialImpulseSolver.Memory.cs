@@ -69,6 +69,8 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         _activeOfBodies.ShrinkBodies(capacity);
         _touching.ShrinkBodies(capacity);
         _positionContactsOfBodies.ShrinkBodies(capacity);
+        _strips.ShrinkBodies(capacity);
+        Buffers.ShrinkTo(ref _bodyScratch, capacity, 0);
     }
 
     private void ShrinkContacts(int capacity)
@@ -85,5 +87,7 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         _positionContactsOfBodies.ShrinkContacts(capacity);
         _velocityMarks.Shrink(capacity);
         _positionMarks.Shrink(capacity);
+        _strips.ShrinkContacts(capacity);
+        Buffers.ShrinkTo(ref _contactScratch, capacity, 0);
     }
 }

@@ -57,6 +57,13 @@ public sealed partial class SequentialImpulseSolver
         _gravity = gravity;
         _planar = IsPlanar(bodies, gravity);
         _heightOrder.Sort(_bodyHeights.AsSpan(0, n), _bodyOrder.AsSpan(0, n));
+        if (_strips.Count > 1)
+        {
+            // Each strip's bodies together (SweepStrips.cs), so that threads sweeping strips write apart in memory.
+            Buffers.EnsureCapacity(ref _bodyScratch, n);
+            _strips.Group(_bodyOrder.AsSpan(0, n), bodies: true, _bodyScratch, _bodyStart);
+        }
+
         for (int k = 0; k < n; k++)
         {
             _slotOf[_bodyOrder[k]] = k + 1;
@@ -118,6 +125,13 @@ public sealed partial class SequentialImpulseSolver
             int slot = _slotOf[i];
             _bodies[slot] = VelocityState.Of(bodies[i]);
             _positions[slot] = bodies[i].position;
+            if (!bodies[i].IsDynamic)
+            {
+                // −0 as +0: the sweeps add ±0 to what nothing moves, which turns −0 into +0 or not by the order of the
+                // additions, and strips on several threads add in another order than one thread (SweepStrips.cs).
+                _bodies[slot].Linear += Vector3.Zero;
+                _bodies[slot].Angular += Vector3.Zero;
+            }
         }
     }
 
@@ -153,6 +167,13 @@ public sealed partial class SequentialImpulseSolver
         }
 
         _heightOrder.Sort(_heights.AsSpan(0, contacts.Length), _ties.AsSpan(0, contacts.Length), _order.AsSpan(0, contacts.Length));
+        if (_strips.Count > 1)
+        {
+            // Strip after strip, each bottom-up, then the seam contacts (SweepStrips.cs).
+            Buffers.EnsureCapacity(ref _contactScratch, contacts.Length);
+            _strips.Group(_order.AsSpan(0, contacts.Length), bodies: false, _contactScratch, _contactStart);
+        }
+
         _extraSweeps = ExtraSweepsFor(pile.Layers);
     }
 
@@ -254,6 +275,7 @@ public sealed partial class SequentialImpulseSolver
         bool noGravity = _gravity == Vector3.Zero;
         Buffers.EnsureCapacity(ref _active, contacts.Length);
         _activeCount = 0;
+        _substepInStrips = false;
         for (int k = 0; k < contacts.Length; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
@@ -338,6 +360,8 @@ public sealed partial class SequentialImpulseSolver
             c.FrictionImpulse1 = Vector3.Dot(c.FrictionImpulse, c.Tangent1);
             ClampFriction(ref c);
         }
+
+        FindStripsInActive();
     }
 
     private static bool IsIdentity(ReadOnlySpan<int> order)

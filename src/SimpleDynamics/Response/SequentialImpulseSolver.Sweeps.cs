@@ -13,19 +13,18 @@ public sealed partial class SequentialImpulseSolver
     /// substep's after that), so that a resting pile starts each substep almost solved. Without warm starting they
     /// start from zero.
     /// </summary>
-    private void WarmStart()
-    {
-        foreach (int k in _active.AsSpan(0, _activeCount))
-        {
-            ref ContactConstraint c = ref _constraints[k];
-            if (!WarmStarting)
-            {
-                c.NormalImpulse = c.FrictionImpulse1 = c.FrictionImpulse2 = 0;
-                continue;
-            }
+    private void WarmStart() => RunPass(StripPass.WarmStart);
 
-            Apply(ref c, c.NormalImpulse, c.FrictionImpulse1, c.FrictionImpulse2);
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // in the warm start's loop
+    private void WarmStart(ref ContactConstraint c)
+    {
+        if (!WarmStarting)
+        {
+            c.NormalImpulse = c.FrictionImpulse1 = c.FrictionImpulse2 = 0;
+            return;
         }
+
+        Apply(ref c, c.NormalImpulse, c.FrictionImpulse1, c.FrictionImpulse2);
     }
 
     /// <summary>Velocity sweeps done in the step begun last, for tests.</summary>
@@ -57,6 +56,8 @@ public sealed partial class SequentialImpulseSolver
         {
             return;
         }
+
+        SplitSubstep(); // more sweeps follow: worth sharing among threads (see InStrips)
 
         bool converged = _velocityIterations == 1 && change <= _convergenceTolerance;
         bool local = _extraSweeps > 0 && _gravity != Vector3.Zero && _velocityIterations > 1; // see SequentialImpulseSolver.LocalSweeps.cs
@@ -95,10 +96,7 @@ public sealed partial class SequentialImpulseSolver
     private void SweepUnmeasured()
     {
         SweepsThisStep++;
-        foreach (int k in _active.AsSpan(0, _activeCount))
-        {
-            SolveContact(ref _constraints[k]);
-        }
+        RunPass(StripPass.Sweep);
     }
 
     /// <summary>
@@ -115,15 +113,8 @@ public sealed partial class SequentialImpulseSolver
     private float Sweep()
     {
         SweepsThisStep++;
-        float largestChange = 0, largestImpulse = 0, largestSpeedChange = 0;
-        foreach (int k in _active.AsSpan(0, _activeCount))
-        {
-            ref ContactConstraint c = ref _constraints[k];
-            largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(ref c, out float change));
-            largestChange = MathF.Max(largestChange, change);
-            largestImpulse = MathF.Max(largestImpulse, c.NormalImpulse);
-        }
-
+        RunPass(StripPass.MeasuredSweep);
+        float largestSpeedChange = LargestOfPass(0), largestChange = LargestOfPass(1), largestImpulse = LargestOfPass(2);
         if (_gravity != Vector3.Zero)
         {
             return largestSpeedChange / (_gravity.Length() * _step!.SubstepLength);
@@ -236,42 +227,45 @@ public sealed partial class SequentialImpulseSolver
     /// </remarks>
     private bool PropagateShock()
     {
-        float tolerance = _convergenceTolerance * _gravity.Length() * _step!.SubstepLength;
-        bool changed = false;
-        foreach (int k in _active.AsSpan(0, _activeCount))
+        RunPass(StripPass.Shock);
+        return LargestOfPass(0) > 0;
+    }
+
+    /// <summary>The slowing that counts as a change for <see cref="PropagateShock"/>: the convergence tolerance of g h.</summary>
+    private float ShockTolerance() => _convergenceTolerance * _gravity.Length() * _step!.SubstepLength;
+
+    /// <summary>Shock propagation at one contact (see <see cref="PropagateShock"/>): returns how much it slowed the upper body.</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // in the shock pass's loop
+    private float StopSinking(ref ContactConstraint c)
+    {
+        if (!c.CarriesWeight)
         {
-            ref ContactConstraint c = ref _constraints[k];
-            if (!c.CarriesWeight)
-            {
-                continue;
-            }
-
-            ref VelocityState a = ref _bodies[c.A];
-            ref VelocityState b = ref _bodies[c.B];
-            float normalVelocity = Vector3.Dot(a.Linear - b.Linear, c.Normal); // r × n = 0: the spins add nothing along n
-            if (normalVelocity >= 0)
-            {
-                continue;
-            }
-
-            float slowing = 0;
-            if (c.AIsUpper && a.InverseMass > 0)
-            {
-                float sinking = -Vector3.Dot(a.Linear, c.Normal); // A's speed into B (n points from B to A)
-                slowing = MathF.Min(-normalVelocity, MathF.Max(sinking, 0f));
-                a.Linear += slowing * c.Normal;
-            }
-            else if (!c.AIsUpper && b.InverseMass > 0)
-            {
-                float sinking = Vector3.Dot(b.Linear, c.Normal); // B's speed into A
-                slowing = MathF.Min(-normalVelocity, MathF.Max(sinking, 0f));
-                b.Linear -= slowing * c.Normal;
-            }
-
-            changed |= slowing > tolerance;
+            return 0;
         }
 
-        return changed;
+        ref VelocityState a = ref _bodies[c.A];
+        ref VelocityState b = ref _bodies[c.B];
+        float normalVelocity = Vector3.Dot(a.Linear - b.Linear, c.Normal); // r × n = 0: the spins add nothing along n
+        if (normalVelocity >= 0)
+        {
+            return 0;
+        }
+
+        float slowing = 0;
+        if (c.AIsUpper && a.InverseMass > 0)
+        {
+            float sinking = -Vector3.Dot(a.Linear, c.Normal); // A's speed into B (n points from B to A)
+            slowing = MathF.Min(-normalVelocity, MathF.Max(sinking, 0f));
+            a.Linear += slowing * c.Normal;
+        }
+        else if (!c.AIsUpper && b.InverseMass > 0)
+        {
+            float sinking = Vector3.Dot(b.Linear, c.Normal); // B's speed into A
+            slowing = MathF.Min(-normalVelocity, MathF.Max(sinking, 0f));
+            b.Linear -= slowing * c.Normal;
+        }
+
+        return slowing;
     }
 
     private static void ClampFriction(ref ContactConstraint c) => ClampFriction(ref c, c.Friction * c.NormalImpulse);

@@ -40,6 +40,9 @@ namespace SimpleDynamics.Response;
 /// anyway. Without gravity there is no up and down, and the pass is skipped.</para>
 /// <para><b>Memory order.</b> Contacts are put in the order they are solved, bottom-up along gravity, and the bodies'
 /// working copies in the same order, so that a sweep walks memory front to back and carries support up a pile.</para>
+/// <para><b>Strips.</b> A pile of at least 8,192 contacts is cut into vertical strips that share no moving body; its
+/// contacts are then solved strip after strip, each bottom-up, and the contacts between strips last, so that
+/// <see cref="World.ThreadCount"/> threads can sweep the strips at once with exactly the result of one (SweepStrips.cs).</para>
 /// <para><b>Position pass</b> (<see cref="SolvePositions"/>): penetration deeper than <see cref="Slop"/> is removed by
 /// the projection of listing 2, split by inverse mass, over <see cref="PositionIterations"/> Gauss–Seidel sweeps
 /// (Box2D's non-linear Gauss–Seidel), each moving a contact by at most <see cref="MaxCorrection"/>. It moves positions
@@ -260,9 +263,11 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
         step.Expect(StepStage.BeginStep);
         _step = step;
         _stepNumber = step.StepNumber;
+        _threads = step.World.Workers;
         _cache = _caches.GetOrCreateValue(step.World);
         _warmStartScale = _cache.SubstepLength > 0 ? step.SubstepLength / _cache.SubstepLength : 1f;
         Span<Contact> contacts = step.Contacts.Contacts;
+        _strips.Cut(step.Bodies, contacts, step.Gravity);
         GatherBodies(step.Bodies, step.Gravity);
         OrderAlongGravity(contacts, step.Gravity);
         ArrangeContacts(contacts);

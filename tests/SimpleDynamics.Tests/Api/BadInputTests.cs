@@ -243,6 +243,9 @@ public class BadInputTests
         Assert.Equal(Vector3.Zero, world.Gravity);
         Throws(() => world.Substeps = 0, nameof(World.Substeps));
         Assert.Equal(4, world.Substeps);
+        Throws(() => world.ThreadCount = 0, nameof(World.ThreadCount));
+        Throws(() => world.ThreadCount = World.MaxThreadCount + 1, nameof(World.ThreadCount));
+        Assert.Equal(1, world.ThreadCount);
         Throws(() => world.ContactMargin = -0.01f, nameof(World.ContactMargin));
         Throws(() => world.ContactMargin = float.NaN, nameof(World.ContactMargin));
         Assert.Equal(0.01f, world.ContactMargin);

@@ -106,10 +106,42 @@ public class WorldLaws
 
     [Fact]
     public void Every_step_of_a_generated_world_keeps_the_laws() =>
+        PropertyCheck.Run(Worlds, c => KeepsTheLaws(c, inStrips: false), seed: 801, maxTest: 2000);
+
+    /// <summary>
+    /// The same laws over the same generated worlds with the contacts cut into strips however few they are
+    /// (SweepStrips.cs: seam contacts swept last) and swept on two threads; and every step bit for bit what one
+    /// thread does with the same strips.
+    /// </summary>
+    [Fact]
+    public void Every_step_of_a_generated_world_in_strips_on_two_threads_keeps_the_laws_and_matches_one_thread()
+    {
+        int worlds = 0, withSeams = 0;
         PropertyCheck.Run(Worlds, c =>
         {
-            World world = c.Build(out RigidBody[] bodies);
+            worlds++;
+            withSeams += KeepsTheLaws(c, inStrips: true) ? 1 : 0;
+        }, seed: 801, maxTest: 2000);
+        Assert.True(withSeams > worlds / 4, $"only {withSeams} of {worlds} worlds had a contact across a cut in some step");
+    }
+
+    /// <summary>Checks the laws at every step; returns whether some step had a seam contact (in strips).</summary>
+    private static bool KeepsTheLaws(WorldCase c, bool inStrips)
+    {
+        World world = c.Build(out RigidBody[] bodies);
+        World? oneThread = null;
+        if (inStrips)
+        {
+            ((SequentialImpulseSolver)world.Responder).Strips.ContactsPerStrip = 1;
+            world.ThreadCount = 2;
+            oneThread = c.Build(out _);
+            ((SequentialImpulseSolver)oneThread.Responder).Strips.ContactsPerStrip = 1;
+        }
+
+        try
+        {
             var solver = (SequentialImpulseSolver)world.Responder;
+            bool seams = false;
             bool free = !c.ClosedBox && !c.WithGravity;
             D3 origin = new(0.7, -1.3, 0.4);
             D3 p0 = Measure.Momentum(bodies), l0 = Measure.AngularMomentum(origin, bodies);
@@ -122,6 +154,13 @@ public class WorldLaws
             {
                 double roundingBefore = StateRounding(bodies, origin), energyRoundingBefore = EnergyRounding(world, bodies);
                 world.Step(c.Dt);
+                oneThread?.Step(c.Dt);
+                if (oneThread is not null)
+                {
+                    Law.Holds(SameBits(oneThread, world), $"step {step}: two threads moved a body otherwise than one thread");
+                    seams |= solver.SeamContacts > 0;
+                }
+
                 int updates = c.Substeps + 2 * world.ImpactCount;
                 rounding += updates * Math.Max(roundingBefore, StateRounding(bodies, origin));
                 energyRounding += updates * Math.Max(energyRoundingBefore, EnergyRounding(world, bodies));
@@ -143,7 +182,33 @@ public class WorldLaws
                     before[i] = bodies[i].Position;
                 }
             }
-        }, seed: 801, maxTest: 2000);
+
+            return seams;
+        }
+        finally
+        {
+            world.ThreadCount = 1;
+        }
+    }
+
+    private static bool SameBits(World expected, World actual)
+    {
+        for (int i = 0; i < expected.Bodies.Count; i++)
+        {
+            RigidBody e = expected.Bodies[i], a = actual.Bodies[i];
+            foreach ((Vector3 x, Vector3 y) in new[] { (e.Position, a.Position), (e.LinearVelocity, a.LinearVelocity), (e.AngularVelocity, a.AngularVelocity) })
+            {
+                if (BitConverter.SingleToInt32Bits(x.X) != BitConverter.SingleToInt32Bits(y.X) ||
+                    BitConverter.SingleToInt32Bits(x.Y) != BitConverter.SingleToInt32Bits(y.Y) ||
+                    BitConverter.SingleToInt32Bits(x.Z) != BitConverter.SingleToInt32Bits(y.Z))
+                {
+                    return false;
+                }
+            }
+        }
+
+        return true;
+    }
 
     /// <summary>
     /// How much rounding the float32 state can add to the angular momentum about <paramref name="origin"/> in one

@@ -33,6 +33,7 @@ public class SafeMutationTests
             ["Substeps"] = () => world.Substeps = 1,
             ["Responder"] = () => world.Responder = new SequentialImpulseSolver(),
             ["Detector"] = () => world.Detector = new BruteForceDetector(),
+            ["ThreadCount"] = () => world.ThreadCount = 2,
         };
         var caught = new Dictionary<string, Exception?>();
 
@@ -63,12 +64,15 @@ public class SafeMutationTests
         Assert.Equal(4, world.Substeps);
         Assert.Same(solver, world.Responder);
         Assert.IsType<SpatialHashDetector>(world.Detector);
+        Assert.Equal(1, world.ThreadCount);
 
         // Between steps the same calls succeed.
         foreach (Action attempt in attempts.Values)
         {
             attempt();
         }
+
+        world.ThreadCount = 1;
     }
 
     [Fact]
