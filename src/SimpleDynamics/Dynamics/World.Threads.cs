@@ -13,10 +13,12 @@ public sealed partial class World
     /// <summary>
     /// How many threads a step may use (1 to <see cref="MaxThreadCount"/>, default 1): the caller's and
     /// <c>ThreadCount − 1</c> worker threads of the world's own. Every result is the same, bit for bit, whatever the
-    /// count. The default solver cuts a pile of at least 8,192 contacts into vertical strips that share no moving body
-    /// and sweeps them strip after strip, then the contacts between strips (see SweepStrips.cs): threads sweep the
-    /// strips at once. Only the velocity passes of substeps that need more than one sweep are shared (a landing or
-    /// stirring pile); a smaller pile, a settled one, and every other stage of the step run on the caller's thread.
+    /// count. The default solver shares its velocity sweeps when it cuts a pile into strips
+    /// (<see cref="Response.SequentialImpulseSolver.Strips"/>, off by default: set it to the thread count): it then
+    /// sweeps a pile of at least 8,192 contacts strip after strip, then the contacts between strips (see SweepStrips.cs),
+    /// and threads sweep the strips at once. Only the velocity passes of substeps that need more than one sweep are
+    /// shared (a landing or stirring pile); a smaller pile, a settled one, and every other stage of the step run on the
+    /// caller's thread.
     /// </summary>
     /// <remarks>
     /// Setting a larger count starts the workers; setting 1 stops them, as does the world being collected. During a

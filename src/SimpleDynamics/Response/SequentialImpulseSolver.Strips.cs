@@ -5,7 +5,8 @@ namespace SimpleDynamics.Response;
 
 /// <summary>
 /// The velocity passes over every contact on several threads (<see cref="World.ThreadCount"/>): the strips of a large
-/// pile at once, then the seam contacts between them, with exactly the result of one thread (see <see cref="SweepStrips"/>).
+/// pile (<see cref="Strips"/>) at once, then the seam contacts between them, with exactly the result of one thread
+/// (see <see cref="SweepStrips"/>).
 /// </summary>
 public sealed partial class SequentialImpulseSolver
 {
@@ -23,8 +24,8 @@ public sealed partial class SequentialImpulseSolver
     private float[] _stripResults = new float[Padding]; // per thread, and the seam: what its part of a pass measured
     private int _resultSlots; // the results the last pass wrote
 
-    /// <summary>The strips of the step begun last, for tests (their <see cref="SweepStrips.ContactsPerStrip"/> may be lowered).</summary>
-    internal SweepStrips Strips => _strips;
+    /// <summary>The cut of the step begun last, for tests (its <see cref="SweepStrips.ContactsPerStrip"/> may be lowered).</summary>
+    internal SweepStrips Cut => _strips;
 
     /// <summary>The seam contacts of the step begun last (between two strips), for tests.</summary>
     internal int SeamContacts => _strips.Count > 1 ? _contactStart[_strips.Count + 1] - _contactStart[_strips.Count] : 0;

@@ -40,9 +40,10 @@ namespace SimpleDynamics.Response;
 /// anyway. Without gravity there is no up and down, and the pass is skipped.</para>
 /// <para><b>Memory order.</b> Contacts are put in the order they are solved, bottom-up along gravity, and the bodies'
 /// working copies in the same order, so that a sweep walks memory front to back and carries support up a pile.</para>
-/// <para><b>Strips.</b> A pile of at least 8,192 contacts is cut into vertical strips that share no moving body; its
-/// contacts are then solved strip after strip, each bottom-up, and the contacts between strips last, so that
-/// <see cref="World.ThreadCount"/> threads can sweep the strips at once with exactly the result of one (SweepStrips.cs).</para>
+/// <para><b>Strips</b> (<see cref="Strips"/>, off by default). A pile of at least 8,192 contacts may be cut into vertical
+/// strips that share no moving body; its contacts are then solved strip after strip, each bottom-up, and the contacts
+/// between strips last, so that <see cref="World.ThreadCount"/> threads can sweep the strips at once with exactly the
+/// result of one (SweepStrips.cs).</para>
 /// <para><b>Position pass</b> (<see cref="SolvePositions"/>): penetration deeper than <see cref="Slop"/> is removed by
 /// the projection of listing 2, split by inverse mass, over <see cref="PositionIterations"/> Gauss–Seidel sweeps
 /// (Box2D's non-linear Gauss–Seidel), each moving a contact by at most <see cref="MaxCorrection"/>. It moves positions
@@ -96,6 +97,29 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
         Guard.NonNegative(friction, nameof(friction));
         Restitution = restitution;
         Friction = friction;
+    }
+
+    /// <summary>
+    /// The most vertical strips a pile of at least 8,192 contacts is cut into, so that <see cref="World.ThreadCount"/>
+    /// threads can share its velocity sweeps: 1 (default: never cut), 2, 4 or 8, one strip per 4,096 contacts at most.
+    /// The strips are swept one after another, each bottom-up, then the contacts between them; the result is the same,
+    /// bit for bit, on any number of threads, but it is not the result without strips: support crosses a cut a sweep
+    /// late, and a deep pile needs more sweeps to settle (SweepStrips.cs). Set it to the thread count for a world that
+    /// steps on several threads; with 1 the world's threads have nothing to share.
+    /// </summary>
+    /// <exception cref="ArgumentOutOfRangeException">The value is not 1, 2, 4 or 8; nothing changes.</exception>
+    public int Strips
+    {
+        get => _strips.Most;
+        set
+        {
+            if (value is not (1 or 2 or 4 or 8))
+            {
+                throw new ArgumentOutOfRangeException(nameof(Strips), value, $"{nameof(Strips)} must be 1, 2, 4 or 8.");
+            }
+
+            _strips.Most = value;
+        }
     }
 
     /// <summary>
@@ -349,6 +373,7 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
         StoreImpulses(step.Contacts.Contacts);
         ShrinkIdleBuffers(step.Bodies.Length, step.Contacts.Count);
         _step = null;
+        _threads = null; // the world's: not kept alive by a solver that outlives it
     }
 
     /// <summary>Throws unless the context is in <paramref name="stage"/> of the step this solver began.</summary>

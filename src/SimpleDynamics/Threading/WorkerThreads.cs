@@ -18,8 +18,9 @@ internal abstract class ParallelJob
 /// <see cref="Threads"/> = 2 there is one worker.
 /// </summary>
 /// <remarks>
-/// While the owner is <see cref="Busy"/> (a world in its step) the workers spin between jobs, because a thread woken
-/// from sleep takes tens to hundreds of microseconds to run again (measured on a 2-core VM: a settled 4,000-disc pit
+/// While the owner is <see cref="Busy"/> (a world in its step) the workers spin between jobs (yielding their core after
+/// <see cref="SpinTicks"/>, in case there are more threads than cores), because a thread woken from sleep takes tens
+/// to hundreds of microseconds to run again (measured on a 2-core VM: a settled 4,000-disc pit
 /// stepped 20 % slower on two threads than on one when the worker slept between substeps). Otherwise a worker spins
 /// for <see cref="SpinTicks"/> after its last job, then blocks, so an idle world costs no CPU. The threads are background threads
 /// and hold only the <see cref="Crew"/>, not this object: when the world that owns this object is collected, the
@@ -103,16 +104,20 @@ internal sealed class WorkerThreads
         GC.SuppressFinalize(this);
     }
 
-    /// <summary>One wait of a spin loop: a short busy wait, and after many a yield, in case the awaited thread has no core.</summary>
+    /// <summary>One wait of a spin loop: a short busy wait; after many, a yield, and after very many a sleep, in case the awaited thread has no core.</summary>
     public static void Pause(int spins)
     {
         if (spins < 1_000)
         {
             Thread.SpinWait(8);
         }
-        else
+        else if (spins < 20_000)
         {
             Thread.Yield();
+        }
+        else
+        {
+            Thread.Sleep(1);
         }
     }
 
@@ -202,9 +207,16 @@ internal sealed class WorkerThreads
             int spins = 0;
             while (Volatile.Read(ref Generation) == seen)
             {
-                if (++spins % 64 != 0 || Busy || Stopwatch.GetTimestamp() - start < SpinTicks)
+                if (++spins % 64 != 0 || Stopwatch.GetTimestamp() - start < SpinTicks)
                 {
                     Thread.SpinWait(8);
+                    continue;
+                }
+
+                if (Busy)
+                {
+                    // In a step: stay awake, but let a thread that has no core run (more threads than cores).
+                    Thread.Yield();
                     continue;
                 }
 

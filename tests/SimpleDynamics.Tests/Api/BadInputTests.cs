@@ -253,6 +253,11 @@ public class BadInputTests
         Throws(() => new BruteForceDetector().FindContacts(ReadOnlySpan<RigidBody>.Empty, new CollisionData(), lookahead: float.NaN), "lookahead");
         Throws(() => _ = new ImpulseCollisionResponder(restitution: 2f), "restitution");
         Throws(() => _ = new SequentialImpulseSolver(friction: -1f), "friction");
+        var solver = new SequentialImpulseSolver();
+        Throws(() => solver.Strips = 0, nameof(SequentialImpulseSolver.Strips));
+        Throws(() => solver.Strips = 3, nameof(SequentialImpulseSolver.Strips));
+        Throws(() => solver.Strips = 16, nameof(SequentialImpulseSolver.Strips));
+        Assert.Equal(1, solver.Strips);
         Throws(() => world.MeasureDiagnostics(Inf3), "point");
     }
 

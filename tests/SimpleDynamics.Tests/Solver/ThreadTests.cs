@@ -16,6 +16,7 @@ namespace SimpleDynamics.Tests.Solver;
 public class ThreadTests
 {
     private const float Dt = 1f / 60f;
+    private const int Steps = 120; // 2 s: the pour lands and its pile forms
     private readonly ITestOutputHelper _output;
 
     public ThreadTests(ITestOutputHelper output) => _output = output;
@@ -23,6 +24,7 @@ public class ThreadTests
     /// <summary>
     /// A pour of mixed sizes with a static post and a kinematic paddle in it, cut into up to 8 strips (64 contacts a
     /// strip instead of 4,096, so that a small pit is cut), on 1, 2, 3 and 4 threads: every body, every step, every bit.
+    /// (One thread and strips: the same order; threads without strips have nothing to share.)
     /// </summary>
     [Theory]
     [InlineData(true, 600)]
@@ -33,7 +35,7 @@ public class ThreadTests
         int cutSteps = 0, seams = 0;
         try
         {
-            for (int step = 1; step <= 180; step++)
+            for (int step = 1; step <= Steps; step++)
             {
                 foreach (World world in worlds)
                 {
@@ -41,7 +43,7 @@ public class ThreadTests
                 }
 
                 var solver = (SequentialImpulseSolver)worlds[0].Responder;
-                if (solver.Strips.Count > 1)
+                if (solver.Cut.Count > 1)
                 {
                     cutSteps++;
                     seams += solver.SeamContacts;
@@ -62,8 +64,8 @@ public class ThreadTests
             }
         }
 
-        _output.WriteLine($"{cutSteps} of 180 steps cut into strips, {seams / (double)Math.Max(cutSteps, 1):F0} seam contacts a step");
-        Assert.True(cutSteps > 120, $"only {cutSteps} steps were cut into strips");
+        _output.WriteLine($"{cutSteps} of {Steps} steps cut into strips, {seams / (double)Math.Max(cutSteps, 1):F0} seam contacts a step");
+        Assert.True(cutSteps > Steps / 2, $"only {cutSteps} steps were cut into strips");
         Assert.True(seams > 0, "no contact lay across a cut");
     }
 
@@ -86,7 +88,7 @@ public class ThreadTests
 
             long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
             long workers = world.Workers.WorkerAllocatedBytes - workersBefore;
-            Assert.True(((SequentialImpulseSolver)world.Responder).Strips.Count > 1, "the pile was not cut");
+            Assert.True(((SequentialImpulseSolver)world.Responder).Cut.Count > 1, "the pile was not cut");
             Assert.True(allocated == 0 && workers == 0, $"{allocated} B allocated in 100 steps on the stepping thread, {workers} B on the worker");
         }
         finally
@@ -167,8 +169,8 @@ public class ThreadTests
 
     private static World Pit(bool planar, int count, int threads)
     {
-        var solver = new SequentialImpulseSolver();
-        solver.Strips.ContactsPerStrip = 64;
+        var solver = new SequentialImpulseSolver { Strips = 8 };
+        solver.Cut.ContactsPerStrip = 64;
         World world = Scenes.BallPit(count, planar, seed: 7, radiusSpread: 1.5f, responder: solver);
         world.SleepingEnabled = false;
         float middle = world.Bodies.Average(b => b.Position.X);
