@@ -14,6 +14,9 @@ internal static class Sizes
     /// <summary>Ball pits and the smash: the N ∈ {1,000, 4,000, 16,000}.</summary>
     public static IEnumerable<int> Scenes => Quick ? new[] { 1000 } : new[] { 1000, 4000, 16000 };
 
+    /// <summary>Pours (one per iteration, seconds each): 4,000 discs, the smallest pit cut into strips for threads.</summary>
+    public static IEnumerable<int> Pours => Quick ? new[] { 1000 } : new[] { 4000 };
+
     /// <summary>Broadphase against brute force: O(n²) brute force at 16,000 would take seconds per call.</summary>
     public static IEnumerable<int> Broadphase => Quick ? new[] { 1000 } : new[] { 1000, 4000 };
 }
