@@ -51,8 +51,8 @@ public class ThreadTests
 
                 for (int w = 1; w < worlds.Length; w++)
                 {
-                    Assert.True(FirstBitDifference(worlds[0], worlds[w]) is null,
-                        $"step {step}, {w + 1} threads: {FirstBitDifference(worlds[0], worlds[w])}");
+                    Assert.True(WorldMeasure.FirstDifference(worlds[0], worlds[w]) is null,
+                        $"step {step}, {w + 1} threads: {WorldMeasure.FirstDifference(worlds[0], worlds[w])}");
                 }
             }
         }
@@ -142,7 +142,7 @@ public class ThreadTests
             once.Step(Dt);
             threaded.Step(Dt);
             threaded.ThreadCount = step % 2 == 0 ? 1 : 2;
-            Assert.True(FirstBitDifference(once, threaded) is null, $"step {step}: {FirstBitDifference(once, threaded)}");
+            Assert.True(WorldMeasure.FirstDifference(once, threaded) is null, $"step {step}: {WorldMeasure.FirstDifference(once, threaded)}");
         }
 
         threaded.ThreadCount = 1;
@@ -179,25 +179,4 @@ public class ThreadTests
         world.ThreadCount = threads;
         return world;
     }
-
-    /// <summary>The first body whose position, velocity, spin or orientation differs in any bit, or null.</summary>
-    private static string? FirstBitDifference(World expected, World actual)
-    {
-        for (int i = 0; i < expected.Bodies.Count; i++)
-        {
-            RigidBody e = expected.Bodies[i], a = actual.Bodies[i];
-            if (!Same(e.Position, a.Position) || !Same(e.LinearVelocity, a.LinearVelocity) || !Same(e.AngularVelocity, a.AngularVelocity) ||
-                !Same(new Vector3(e.Orientation.X, e.Orientation.Y, e.Orientation.Z), new Vector3(a.Orientation.X, a.Orientation.Y, a.Orientation.Z)))
-            {
-                return $"body {i} at {a.Position:R} moving {a.LinearVelocity:R}, not {e.Position:R} moving {e.LinearVelocity:R}";
-            }
-        }
-
-        return null;
-    }
-
-    private static bool Same(Vector3 a, Vector3 b) =>
-        BitConverter.SingleToInt32Bits(a.X) == BitConverter.SingleToInt32Bits(b.X) &&
-        BitConverter.SingleToInt32Bits(a.Y) == BitConverter.SingleToInt32Bits(b.Y) &&
-        BitConverter.SingleToInt32Bits(a.Z) == BitConverter.SingleToInt32Bits(b.Z);
 }
