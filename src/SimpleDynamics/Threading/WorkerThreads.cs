@@ -54,12 +54,6 @@ internal sealed class WorkerThreads
     /// <summary>The threads a job runs on, the caller's included.</summary>
     public int Threads { get; }
 
-    /// <summary>
-    /// Whether a job's threads are to give up: one of them threw. A job whose threads wait for each other checks it
-    /// while it waits, so that a failure ends the job instead of leaving the others waiting forever.
-    /// </summary>
-    public bool Failed => Volatile.Read(ref _crew.Failure) is not null;
-
     /// <summary>The bytes the worker threads have allocated since they started, as of their last job (for tests).</summary>
     public long WorkerAllocatedBytes => _crew.AllocatedBytes();
 
