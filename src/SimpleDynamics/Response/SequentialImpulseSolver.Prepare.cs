@@ -61,7 +61,8 @@ public sealed partial class SequentialImpulseSolver
         {
             // Each strip's bodies together (SweepStrips.cs), so that threads sweeping strips write apart in memory.
             Buffers.EnsureCapacity(ref _bodyScratch, n);
-            _strips.Group(_bodyOrder.AsSpan(0, n), bodies: true, _bodyScratch, _bodyStart);
+            Span<int> starts = stackalloc int[SweepStrips.MaxStrips + 2]; // not needed after: slots follow the order
+            _strips.Group(_bodyOrder.AsSpan(0, n), bodies: true, _bodyScratch, starts);
         }
 
         for (int k = 0; k < n; k++)
@@ -125,7 +126,7 @@ public sealed partial class SequentialImpulseSolver
             int slot = _slotOf[i];
             _bodies[slot] = VelocityState.Of(bodies[i]);
             _positions[slot] = bodies[i].position;
-            if (!bodies[i].IsDynamic)
+            if (_strips.Count > 1 && !bodies[i].IsDynamic)
             {
                 // −0 as +0: the sweeps add ±0 to what nothing moves, which turns −0 into +0 or not by the order of the
                 // additions, and strips on several threads add in another order than one thread (SweepStrips.cs).

@@ -16,7 +16,6 @@ public sealed partial class SequentialImpulseSolver
     private readonly SweepStrips _strips = new();
     private WorkerThreads? _threads; // the world's, for the step begun last; null on one thread
     private readonly int[] _contactStart = new int[SweepStrips.MaxStrips + 2]; // per group (strips, then seams): its first contact, and the end
-    private readonly int[] _bodyStart = new int[SweepStrips.MaxStrips + 2]; // the same for the bodies' slots (less one, for the ground)
     private readonly int[] _activeStart = new int[SweepStrips.MaxStrips + 2]; // the same in _active, for the substep
     private int[] _bodyScratch = new int[InitialCapacity]; // where SweepStrips.Group puts the bodies in strips
     private int[] _contactScratch = new int[InitialCapacity]; // and the contacts
@@ -39,16 +38,15 @@ public sealed partial class SequentialImpulseSolver
         Shock,
     }
 
-    private bool _substepInStrips; // whether this substep's passes over every contact run on several threads (see InStrips)
-
     /// <summary>
     /// Whether this substep's passes over every contact run on several threads: only once the first sweep has found
-    /// the contacts unsolved. A settled pile (one sweep a substep) stays on one thread: there a pass is over in about
-    /// 100 µs for 9,000 contacts, and a worker that must first fetch its half of the contacts and bodies from the
-    /// caller's cache takes about as long (measured on a settled 4,000-disc pit: the warm start on two threads 148 µs
-    /// against 67 µs on one, a sweep 115 µs against 132 µs). A pile that needs many sweeps fetches them once.
+    /// the contacts unsolved (<see cref="SplitSubstep"/>). A settled pile (one sweep a substep) stays on one thread:
+    /// there a pass is over in about 100 µs for 9,000 contacts, and a worker that must first fetch its half of the
+    /// contacts and bodies from the caller's cache takes about as long (measured on a settled 4,000-disc pit: the warm
+    /// start on two threads 148 µs against 67 µs on one, a sweep 115 µs against 132 µs). A pile that needs many sweeps
+    /// fetches them once.
     /// </summary>
-    private bool InStrips => _substepInStrips;
+    private bool _substepInStrips;
 
     /// <summary>Lets this substep's remaining passes over every contact run in strips, if the step has strips and threads.</summary>
     private void SplitSubstep() => _substepInStrips = _threads is not null && _strips.Count > 1;
@@ -75,7 +73,7 @@ public sealed partial class SequentialImpulseSolver
     /// <summary>Runs <paramref name="pass"/> over every active contact, in strips on several threads if the step has them.</summary>
     private void RunPass(StripPass pass)
     {
-        if (InStrips)
+        if (_substepInStrips)
         {
             RunInStrips(pass);
             _resultSlots = _threads!.Threads + 1;

@@ -57,7 +57,7 @@ public sealed partial class SequentialImpulseSolver
             return;
         }
 
-        SplitSubstep(); // more sweeps follow: worth sharing among threads (see InStrips)
+        SplitSubstep(); // more sweeps follow: worth sharing among threads (see _substepInStrips)
 
         bool converged = _velocityIterations == 1 && change <= _convergenceTolerance;
         bool local = _extraSweeps > 0 && _gravity != Vector3.Zero && _velocityIterations > 1; // see SequentialImpulseSolver.LocalSweeps.cs

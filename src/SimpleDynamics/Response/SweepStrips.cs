@@ -69,8 +69,8 @@ internal sealed class SweepStrips
             return;
         }
 
-        int axis = Across(bodies, gravity);
-        AssignBodies(bodies, contacts, axis, strips);
+        int axis = Across(bodies, gravity, out Vector3 low, out Vector3 high);
+        AssignBodies(bodies, contacts, axis, Coordinate(low, axis), Coordinate(high, axis), strips);
         Buffers.EnsureCapacity(ref _groupOf, contacts.Length);
         for (int i = 0; i < contacts.Length; i++)
         {
@@ -80,10 +80,14 @@ internal sealed class SweepStrips
         }
     }
 
-    /// <summary>The axis across the pile: of the axes gravity does not point along, the one the bodies spread furthest along.</summary>
-    private static int Across(ReadOnlySpan<RigidBody> bodies, Vector3 gravity)
+    /// <summary>
+    /// The axis across the pile: of the axes gravity does not point along, the one the dynamic bodies spread furthest
+    /// along; gives their bounds, <paramref name="low"/> and <paramref name="high"/>, too.
+    /// </summary>
+    private static int Across(ReadOnlySpan<RigidBody> bodies, Vector3 gravity, out Vector3 low, out Vector3 high)
     {
-        Vector3 low = new(float.PositiveInfinity), high = new(float.NegativeInfinity);
+        low = new Vector3(float.PositiveInfinity);
+        high = new Vector3(float.NegativeInfinity);
         foreach (RigidBody body in bodies)
         {
             if (body.IsDynamic)
@@ -109,19 +113,9 @@ internal sealed class SweepStrips
     }
 
     /// <summary>Gives each dynamic body the strip its position across the pile falls in, with cuts that share the contacts out evenly.</summary>
-    private void AssignBodies(ReadOnlySpan<RigidBody> bodies, ReadOnlySpan<Contact> contacts, int axis, int strips)
+    private void AssignBodies(ReadOnlySpan<RigidBody> bodies, ReadOnlySpan<Contact> contacts, int axis, float low, float high, int strips)
     {
         Buffers.EnsureCapacity(ref _stripOfBody, bodies.Length);
-        float low = float.PositiveInfinity, high = float.NegativeInfinity;
-        foreach (RigidBody body in bodies)
-        {
-            if (body.IsDynamic)
-            {
-                float x = Coordinate(body.position, axis);
-                low = MathF.Min(low, x);
-                high = MathF.Max(high, x);
-            }
-        }
 
         // A histogram of the contacts across the pile (each counted at its first dynamic body), then cuts at equal
         // shares of it.

@@ -99,7 +99,7 @@ internal sealed class WorkerThreads
     }
 
     /// <summary>One wait of a spin loop: a short busy wait; after many, a yield, and after very many a sleep, in case the awaited thread has no core.</summary>
-    public static void Pause(int spins)
+    private static void Pause(int spins)
     {
         if (spins < 1_000)
         {
