@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Threading;
 
 namespace SimpleDynamics.Response;
 
@@ -79,6 +80,68 @@ internal sealed class ContactMarks
         return false;
     }
 
+    /// <summary>
+    /// <see cref="MarkAround"/> for a sweep that threads share, each over its own range of positions: a word at the
+    /// edge of a range holds bits of the next range too, and the positions after every range (the seams) are marked
+    /// by all of them, so bits are set atomically. Counts the contacts newly marked for the next sweep in
+    /// <paramref name="markedForNext"/> (the caller's own count, added up after the sweep: see <see cref="AddMarkedForNext"/>).
+    /// </summary>
+    public void MarkAroundShared(ReadOnlySpan<int> positions, int position, ref int markedForNext)
+    {
+        foreach (int q in positions)
+        {
+            ulong bit = 1UL << (q & 63);
+            if (q > position)
+            {
+                if ((Volatile.Read(ref _now[q >> 6]) & bit) == 0)
+                {
+                    Or(ref _now[q >> 6], bit);
+                }
+            }
+            else if (q < position && (Or(ref _next[q >> 6], bit) & bit) == 0)
+            {
+                markedForNext++;
+            }
+        }
+    }
+
+    /// <summary>
+    /// <see cref="TryTake"/> within positions [<paramref name="start"/>, <paramref name="end"/>) for a sweep that
+    /// threads share, from the thread's own cursor <paramref name="word"/> (begin it at start / 64).
+    /// </summary>
+    public bool TryTakeShared(ref int word, int start, int end, out int position)
+    {
+        int lastWord = (end - 1) >> 6;
+        for (; word <= lastWord; word++)
+        {
+            ulong mine = ulong.MaxValue;
+            if (word == start >> 6)
+            {
+                mine &= ulong.MaxValue << (start & 63);
+            }
+
+            if (word == lastWord && (end & 63) != 0)
+            {
+                mine &= (1UL << (end & 63)) - 1;
+            }
+
+            ulong bits = Volatile.Read(ref _now[word]) & mine;
+            if (bits != 0)
+            {
+                int bitIndex = TrailingZeros(bits);
+                And(ref _now[word], ~(1UL << bitIndex));
+                position = (word << 6) | bitIndex;
+                return true;
+            }
+        }
+
+        position = -1;
+        return false;
+    }
+
+    /// <summary>Adds the contacts that threads marked for the next sweep (<see cref="MarkAroundShared"/>) to <see cref="MarkedForNext"/>.</summary>
+    public void AddMarkedForNext(int count) => MarkedForNext += count;
+
     /// <summary>Begins the next sweep: what was marked for it is now to visit.</summary>
     public void NextSweep()
     {
@@ -94,6 +157,48 @@ internal sealed class ContactMarks
         Buffers.ShrinkTo(ref _now, (contacts + 63) >> 6, 0);
         Buffers.ShrinkTo(ref _next, (contacts + 63) >> 6, 0);
         _words = 0;
+    }
+
+    /// <summary>Sets <paramref name="bits"/> in <paramref name="word"/> atomically; returns the word before.</summary>
+    private static ulong Or(ref ulong word, ulong bits)
+    {
+#if NETSTANDARD2_1
+        ref long signed = ref System.Runtime.InteropServices.MemoryMarshal.Cast<ulong, long>(System.Runtime.InteropServices.MemoryMarshal.CreateSpan(ref word, 1))[0];
+        long before = Volatile.Read(ref signed);
+        while (true)
+        {
+            long seen = Interlocked.CompareExchange(ref signed, before | (long)bits, before);
+            if (seen == before)
+            {
+                return (ulong)before;
+            }
+
+            before = seen;
+        }
+#else
+        return Interlocked.Or(ref word, bits);
+#endif
+    }
+
+    /// <summary>Keeps only <paramref name="bits"/> of <paramref name="word"/>, atomically.</summary>
+    private static void And(ref ulong word, ulong bits)
+    {
+#if NETSTANDARD2_1
+        ref long signed = ref System.Runtime.InteropServices.MemoryMarshal.Cast<ulong, long>(System.Runtime.InteropServices.MemoryMarshal.CreateSpan(ref word, 1))[0];
+        long before = Volatile.Read(ref signed);
+        while (true)
+        {
+            long seen = Interlocked.CompareExchange(ref signed, before & (long)bits, before);
+            if (seen == before)
+            {
+                return;
+            }
+
+            before = seen;
+        }
+#else
+        Interlocked.And(ref word, bits);
+#endif
     }
 
     private static int TrailingZeros(ulong bits)

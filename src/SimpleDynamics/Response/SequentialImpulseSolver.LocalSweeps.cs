@@ -31,6 +31,7 @@ public sealed partial class SequentialImpulseSolver
     private readonly ContactMarks _velocityMarks = new();
     private Vector3[] _publishedLinear = new Vector3[InitialCapacity]; // per slot: the velocity its contacts were last solved with
     private Vector3[] _publishedAngular = new Vector3[InitialCapacity];
+    private float _localDrift2; // the squared drift allowed in the local sweep that threads share (SweepMarkedRange)
 
     /// <summary>Sweeps of the step begun last that visited only the contacts of changed bodies, for tests.</summary>
     internal int LocalSweepsThisStep { get; private set; }
@@ -134,6 +135,19 @@ public sealed partial class SequentialImpulseSolver
     {
         SweepsThisStep++;
         LocalSweepsThisStep++;
+        if (_substepInStrips)
+        {
+            _localDrift2 = drift2;
+            RunPass(StripPass.LocalSweep);
+            for (int slot = 0; slot < _resultSlots; slot++)
+            {
+                _velocityMarks.AddMarkedForNext(_stripCounts[slot * Padding]);
+                LocalSolvesThisStep += _stripCounts[slot * Padding + 1];
+            }
+
+            return LargestOfPass(0);
+        }
+
         float largestSpeedChange = 0;
         while (_velocityMarks.TryTake(out int p))
         {
@@ -145,6 +159,44 @@ public sealed partial class SequentialImpulseSolver
         }
 
         return largestSpeedChange;
+    }
+
+    /// <summary>
+    /// <see cref="SweepMarked"/> over positions [<paramref name="start"/>, <paramref name="end"/>) of the active
+    /// contacts only, by one of the threads that share the sweep (<paramref name="slot"/>: its results). A strip's
+    /// bodies touch only its own contacts and the seams (SweepStrips.cs), so each thread visits and marks its own range
+    /// in the order one thread would, and marks seam contacts, which come after every strip, for this sweep, to be
+    /// visited once the strips are done: the same marks and the same order as one thread's sweep, bit for bit.
+    /// </summary>
+    private void SweepMarkedRange(int slot, int start, int end)
+    {
+        float drift2 = _localDrift2, largestSpeedChange = 0;
+        int word = start >> 6, markedForNext = 0, solves = 0;
+        while (_velocityMarks.TryTakeShared(ref word, start, end, out int p))
+        {
+            solves++;
+            ref ContactConstraint c = ref _constraints[_active[p]];
+            largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(ref c, out _));
+            PublishShared(c.A, p, drift2, ref markedForNext);
+            PublishShared(c.B, p, drift2, ref markedForNext);
+        }
+
+        _stripResults[slot * Padding] = largestSpeedChange;
+        _stripCounts[slot * Padding] = markedForNext;
+        _stripCounts[slot * Padding + 1] = solves;
+    }
+
+    /// <summary><see cref="Publish"/> in a sweep that threads share (<see cref="ContactMarks.MarkAroundShared"/>).</summary>
+    private void PublishShared(int slot, int position, float drift2, ref int markedForNext)
+    {
+        if (!Drifted(slot, drift2))
+        {
+            return;
+        }
+
+        _publishedLinear[slot] = _bodies[slot].Linear;
+        _publishedAngular[slot] = _bodies[slot].Angular;
+        _velocityMarks.MarkAroundShared(_activeOfBodies.Of(slot), position, ref markedForNext);
     }
 
     /// <summary>

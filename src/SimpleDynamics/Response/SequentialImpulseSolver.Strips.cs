@@ -4,9 +4,10 @@ using SimpleDynamics.Threading;
 namespace SimpleDynamics.Response;
 
 /// <summary>
-/// The velocity passes over every contact on several threads (<see cref="World.ThreadCount"/>): the strips of a large
-/// pile (<see cref="Strips"/>) at once, then the seam contacts between them, with exactly the result of one thread
-/// (see <see cref="SweepStrips"/>).
+/// The velocity passes on several threads (<see cref="World.ThreadCount"/>): the strips of a large pile
+/// (<see cref="Strips"/>) at once, then the seam contacts between them, with exactly the result of one thread
+/// (see <see cref="SweepStrips"/>). Those are the passes over every contact and the local sweeps over the contacts
+/// still changing (SequentialImpulseSolver.LocalSweeps.cs), which a deep pile that stirs spends most of its sweeps in.
 /// </summary>
 public sealed partial class SequentialImpulseSolver
 {
@@ -21,6 +22,7 @@ public sealed partial class SequentialImpulseSolver
     private int[] _contactScratch = new int[InitialCapacity]; // and the contacts
     private StripJob? _stripJob;
     private float[] _stripResults = new float[Padding]; // per thread, and the seam: what its part of a pass measured
+    private int[] _stripCounts = new int[Padding]; // the same, for what a local sweep counted (SweepMarkedRange)
     private int _resultSlots; // the results the last pass wrote
 
     /// <summary>The cut of the step begun last, for tests (its <see cref="SweepStrips.ContactsPerStrip"/> may be lowered).</summary>
@@ -36,6 +38,7 @@ public sealed partial class SequentialImpulseSolver
         Sweep,
         MeasuredSweep,
         Shock,
+        LocalSweep,
     }
 
     /// <summary>
@@ -93,6 +96,7 @@ public sealed partial class SequentialImpulseSolver
     {
         int threads = _threads!.Threads;
         Buffers.EnsureCapacity(ref _stripResults, (threads + 1) * Padding);
+        Buffers.EnsureCapacity(ref _stripCounts, (threads + 1) * Padding);
         _stripJob ??= new StripJob(this);
         _stripJob.Pass = pass;
         _threads.Run(_stripJob);
@@ -173,6 +177,10 @@ public sealed partial class SequentialImpulseSolver
                 _stripResults[slot * Padding] = changed ? 1f : 0f;
                 break;
             }
+
+            case StripPass.LocalSweep:
+                SweepMarkedRange(slot, start, end);
+                break;
         }
     }
 
