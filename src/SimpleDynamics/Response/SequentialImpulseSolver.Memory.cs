@@ -82,6 +82,7 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _active, capacity, 0);
         Buffers.ShrinkTo(ref _deepQueue, capacity, 0);
         Buffers.ShrinkTo(ref _queued, capacity, 0);
+        Buffers.ShrinkTo(ref _joined, capacity, 0);
         _activeOfBodies.ShrinkContacts(capacity);
         _touching.ShrinkContacts(capacity);
         _positionContactsOfBodies.ShrinkContacts(capacity);
