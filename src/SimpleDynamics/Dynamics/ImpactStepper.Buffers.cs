@@ -122,6 +122,8 @@ internal sealed partial class ImpactStepper
         Buffers.EnsureCapacity(ref _head, n);
         Buffers.EnsureCapacity(ref _anchorDistance, n);
         Buffers.EnsureCapacity(ref _anchorQueue, n);
+        Buffers.EnsureCapacity(ref _lumpOf, n);
+        Buffers.EnsureCapacity(ref _lumps, n);
     }
 
     private void EnsureContacts(int count)
@@ -145,6 +147,8 @@ internal sealed partial class ImpactStepper
         Buffers.ShrinkTo(ref _head, capacity, 0);
         Buffers.ShrinkTo(ref _anchorDistance, capacity, 0);
         Buffers.ShrinkTo(ref _anchorQueue, capacity, 0);
+        Buffers.ShrinkTo(ref _lumpOf, capacity, 0);
+        Buffers.ShrinkTo(ref _lumps, capacity, 0);
     }
 
     private void ShrinkContacts(int capacity)

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using SimpleDynamics.Bodies;
 using SimpleDynamics.Collision;
 
 namespace SimpleDynamics;
@@ -71,9 +72,11 @@ internal sealed partial class ImpactStepper
     /// again (a pile stepped with one long substep did this, its balls reaching 1 m/s while standing still). So the
     /// touching contacts of such bodies are swept a few times (Gauss–Seidel), each pair's approach along its line of
     /// centres stopped by an inelastic push: the jammed cluster ends the substep moving as one, with linear and
-    /// angular momentum kept and kinetic energy lost, as the inelastic collapse it is.
+    /// angular momentum kept and kinetic energy lost, as the inelastic collapse it is. When the sweeps do not settle it,
+    /// it is stopped outward from what cannot move (<see cref="StopFromAnchors"/>), and what touches nothing immovable
+    /// moves on as one lump (<see cref="MergeFreeJams"/>).
     /// </summary>
-    private void SettleJams(ReadOnlySpan<StaticPlane> planes)
+    private void SettleJams(ReadOnlySpan<RigidBody> bodies, ReadOnlySpan<StaticPlane> planes)
     {
         // Which contacts have a jammed end, marked through the jammed bodies' lists and kept up to date as bodies
         // join, so that a sweep reads one flag per contact.
@@ -132,6 +135,7 @@ internal sealed partial class ImpactStepper
             if (sweep == JamSweeps - 1)
             {
                 StopFromAnchors();
+                MergeFreeJams(bodies); // see ImpactStepper.Lumps.cs
             }
         }
 
@@ -148,7 +152,8 @@ internal sealed partial class ImpactStepper
     /// move: at most to rest along the normal, so kinetic energy only falls. This is shock propagation (Guendelman,
     /// Bridson and Fedkiw, "Nonconvex Rigid Bodies with Stacking", SIGGRAPH 2003,
     /// https://physbam.stanford.edu/~fedkiw/papers/stanford2003-01.pdf) with distance from the walls for height, as
-    /// the solver's position pass does; a cluster that touches nothing immovable is left alone and keeps its momentum.
+    /// the solver's position pass does. A cluster that touches nothing immovable moves on as one lump instead, with its
+    /// momentum and angular momentum (<see cref="MergeFreeJams"/>).
     /// </summary>
     private void StopFromAnchors()
     {

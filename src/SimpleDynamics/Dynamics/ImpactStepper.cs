@@ -279,7 +279,7 @@ internal sealed partial class ImpactStepper
 
         if (_jammed)
         {
-            SettleJams(step.Planes);
+            SettleJams(bodies, step.Planes);
         }
 
         _contacts = Array.Empty<Contact>(); // not kept between substeps: the world's storage may shrink or grow

@@ -42,5 +42,8 @@ internal readonly struct Vector3D
 
     public static double Dot(Vector3D a, Vector3D b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
 
+    public static Vector3D Cross(Vector3D a, Vector3D b) =>
+        new(a.Y * b.Z - a.Z * b.Y, a.Z * b.X - a.X * b.Z, a.X * b.Y - a.Y * b.X);
+
     public override string ToString() => $"<{X:R}, {Y:R}, {Z:R}>";
 }
