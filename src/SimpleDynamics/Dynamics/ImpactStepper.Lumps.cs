@@ -11,16 +11,19 @@ internal sealed partial class ImpactStepper
     private int[] _lumpOf = new int[InitialBodies]; // per body: a body of the same lump, leading to its root (union–find)
     private Lump[] _lumps = new Lump[InitialBodies]; // per root body: what its lump adds up to
 
-    /// <summary>What a lump of jammed bodies adds up to, in double precision, about the world's origin and then its centre.</summary>
+    /// <summary>What a lump of jammed bodies adds up to, in double precision (see <see cref="MergeFreeJams"/>).</summary>
     private struct Lump
     {
+        public bool Several; // more than one body
+        public bool Anchored; // a body of it is reached from something immovable (StopFromAnchors)
         public double Mass;
-        public Vector3D MassMoment; // Σ m x, then the centre of mass X
-        public Vector3D Momentum; // Σ m v, then the velocity of the centre of mass V
+        public Vector3D MassMoment; // Σ m x: the centre of mass X is MassMoment / Mass
+        public Vector3D Momentum; // Σ m v: the centre of mass moves at V = Momentum / Mass
         public Vector3D AngularMomentum; // Σ m r × (v − V), r = x − X
         public double Jxx, Jyy, Jzz, Jxy, Jxz, Jyz; // Σ m (|r|² 1 − r rᵀ)
-        public bool Anchored; // a body of it is reached from something immovable (StopFromAnchors)
-        public bool Several;
+        public Vector3D Spin; // Ω, solving J Ω = L
+
+        public readonly bool Moves => Several && !Anchored;
     }
 
     /// <summary>
@@ -78,7 +81,7 @@ internal sealed partial class ImpactStepper
         for (int i = 0; i < _bodyCount; i++)
         {
             ref Lump lump = ref _lumps[LumpRoot(i)];
-            if (!lump.Several || lump.Anchored || bodies[i].inverseMass == 0)
+            if (!lump.Moves || bodies[i].inverseMass == 0)
             {
                 continue;
             }
@@ -99,16 +102,22 @@ internal sealed partial class ImpactStepper
         // The rigid motion with that momentum and angular momentum.
         for (int i = 0; i < _bodyCount; i++)
         {
-            int root = LumpRoot(i);
-            ref Lump lump = ref _lumps[root];
-            if (!lump.Several || lump.Anchored || bodies[i].inverseMass == 0)
+            if (_lumpOf[i] == i && _lumps[i].Moves)
+            {
+                _lumps[i].Spin = OrbitalSpin(in _lumps[i]);
+            }
+        }
+
+        for (int i = 0; i < _bodyCount; i++)
+        {
+            ref Lump lump = ref _lumps[LumpRoot(i)];
+            if (!lump.Moves || bodies[i].inverseMass == 0)
             {
                 continue;
             }
 
-            Vector3D spin = OrbitalSpin(ref lump);
             Vector3D r = _motion[i].PreciseX - lump.MassMoment / lump.Mass;
-            Vector3D v = lump.Momentum / lump.Mass + Vector3D.Cross(spin, r);
+            Vector3D v = lump.Momentum / lump.Mass + Vector3D.Cross(lump.Spin, r);
             _motion[i].U = v.Rounded;
             bodies[i].linearVelocity = _motion[i].U;
         }
@@ -118,7 +127,7 @@ internal sealed partial class ImpactStepper
     /// Ω solving J Ω = L for a lump (see <see cref="MergeFreeJams"/>). J is singular only when the lump's centres lie on
     /// one line d, J = J⊥ (1 − d dᵀ); then L, a sum of r × u with every r along d, is perpendicular to d, and Ω = L / J⊥.
     /// </summary>
-    private static Vector3D OrbitalSpin(ref Lump lump)
+    private static Vector3D OrbitalSpin(in Lump lump)
     {
         double trace = lump.Jxx + lump.Jyy + lump.Jzz;
         if (trace <= 0)

@@ -3,6 +3,7 @@ using System.Linq;
 using System.Numerics;
 using SimpleDynamics.Bodies;
 using SimpleDynamics.Response;
+using SimpleDynamics.Tests.Properties;
 using Xunit;
 using Xunit.Abstractions;
 
@@ -36,24 +37,23 @@ public class FreeJamTests
         RigidBody light = world.Add(Disc(0.01f, 0.1f, new Vector3(0f, 0f, 0), Vector3.Zero));
         RigidBody right = world.Add(Disc(1000f, 0.3f, new Vector3(0.5f, -0.1f, 0), new Vector3(-5, 0, 0)));
         RigidBody[] bodies = { left, light, right };
-        var origin = new Vector3(0.7f, -1.3f, 0);
-        Vector3 p0 = Momentum(bodies), l0 = AngularMomentum(bodies, origin);
-        double e0 = KineticEnergy(bodies);
-        float pScale = bodies.Sum(b => b.Mass * b.LinearVelocity.Length());
-        float lScale = bodies.Sum(b => b.Mass * (b.Position - origin).Length() * b.LinearVelocity.Length());
+        var origin = new D3(0.7, -1.3, 0);
+        D3 p0 = Measure.Momentum(bodies), l0 = Measure.AngularMomentum(origin, bodies);
+        double e0 = Measure.KineticEnergy(bodies);
+        double pScale = Measure.MomentumScale(bodies), lScale = Measure.AngularMomentumScale(origin, bodies);
 
         int lateImpacts = 0;
         for (int step = 0; step < 60; step++)
         {
             world.Step(Dt);
             lateImpacts += step >= 30 ? world.ImpactCount : 0;
-            Assert.True((Momentum(bodies) - p0).Length() <= 1e-6f * pScale, $"step {step}: momentum {Momentum(bodies)}, not {p0}");
-            Assert.True((AngularMomentum(bodies, origin) - l0).Length() <= 1e-5f * lScale, $"step {step}: angular momentum {AngularMomentum(bodies, origin)}, not {l0}");
-            Assert.True(KineticEnergy(bodies) <= e0 * (1 + 1e-6), $"step {step}: kinetic energy rose from {e0} to {KineticEnergy(bodies)} J");
+            Law.Near(p0, Measure.Momentum(bodies), 1e-6 * pScale, $"step {step}: momentum");
+            Law.Near(l0, Measure.AngularMomentum(origin, bodies), 1e-5 * lScale, $"step {step}: angular momentum about {origin}");
+            Assert.True(Measure.KineticEnergy(bodies) <= e0 * (1 + 1e-6), $"step {step}: kinetic energy rose from {e0} to {Measure.KineticEnergy(bodies)} J");
         }
 
-        _output.WriteLine($"kinetic energy {e0:F1} -> {KineticEnergy(bodies):F1} J; {lateImpacts / 30.0:F1} impacts a step over steps 30-59");
-        Assert.True(KineticEnergy(bodies) < 0.5 * e0, "the heavy discs did not stop each other");
+        _output.WriteLine($"kinetic energy {e0:F1} -> {Measure.KineticEnergy(bodies):F1} J; {lateImpacts / 30.0:F1} impacts a step over steps 30-59");
+        Assert.True(Measure.KineticEnergy(bodies) < 0.5 * e0, "the heavy discs did not stop each other");
         Assert.True(lateImpacts < 30 * 5, $"{lateImpacts / 30.0} impacts a step over steps 30-59: the lump still closes on itself");
     }
 
@@ -82,15 +82,15 @@ public class FreeJamTests
         float dt = 1f / 30f;
         for (int step = 0; step < 40; step++)
         {
-            float before = CentreOfMassVelocity(sandwich).Y;
+            double before = CentreOfMassVelocityY(sandwich);
             world.Step(dt);
             double now = MechanicalEnergy(world, bodies);
             Assert.True(now <= energy + 1e-5 * Math.Abs(energy) + 1e-3, $"step {step}: mechanical energy rose from {energy} to {now} J");
             energy = now;
             if (step >= 26)
             {
-                float gain = CentreOfMassVelocity(sandwich).Y - before;
-                Assert.True(MathF.Abs(gain + 9.81f * dt) <= 1e-3f, $"step {step}: the sandwich's centre of mass gained {gain} m/s, not {-9.81f * dt}");
+                double gain = CentreOfMassVelocityY(sandwich) - before;
+                Assert.True(Math.Abs(gain + 9.81 * dt) <= 1e-3, $"step {step}: the sandwich's centre of mass gained {gain} m/s, not {-9.81 * dt}");
             }
         }
     }
@@ -98,16 +98,8 @@ public class FreeJamTests
     private static RigidBody Disc(float mass, float radius, Vector3 position, Vector3 velocity, float spin = 0f) =>
         new(mass, radius, position, Inertia.Disc(mass, radius)) { LinearVelocity = velocity, AngularVelocity = new Vector3(0, 0, spin) };
 
-    private static Vector3 Momentum(RigidBody[] bodies) => bodies.Aggregate(Vector3.Zero, (sum, b) => sum + b.Mass * b.LinearVelocity);
-
-    private static Vector3 CentreOfMassVelocity(RigidBody[] bodies) => Momentum(bodies) / bodies.Sum(b => b.Mass);
-
-    private static Vector3 AngularMomentum(RigidBody[] bodies, Vector3 origin) => bodies.Aggregate(Vector3.Zero,
-        (sum, b) => sum + b.Mass * Vector3.Cross(b.Position - origin, b.LinearVelocity) + b.Inertia.Transform(b.AngularVelocity));
-
-    private static double KineticEnergy(RigidBody[] bodies) => bodies.Sum(b =>
-        0.5 * b.Mass * b.LinearVelocity.LengthSquared() + 0.5 * Vector3.Dot(b.AngularVelocity, b.Inertia.Transform(b.AngularVelocity)));
+    private static double CentreOfMassVelocityY(RigidBody[] bodies) => Measure.Momentum(bodies).Y / bodies.Sum(b => (double)b.Mass);
 
     private static double MechanicalEnergy(World world, RigidBody[] bodies) =>
-        KineticEnergy(bodies) - bodies.Sum(b => b.Mass * (double)Vector3.Dot(world.Gravity, b.Position));
+        Measure.KineticEnergy(bodies) - bodies.Sum(b => b.Mass * (double)Vector3.Dot(world.Gravity, b.Position));
 }
