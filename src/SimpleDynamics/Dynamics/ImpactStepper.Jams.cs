@@ -61,9 +61,41 @@ internal sealed partial class ImpactStepper
     private void HoldStill(int i)
     {
         _jammed = true;
+        if (_held[i] && _motion[i].Chord != Vector3.Zero)
+        {
+            ForgoGainWhileStill(i);
+        }
+
         _motion[i].Chord = Vector3.Zero;
         _motion[i].A = Vector3.Zero;
         _motion[i].Impacts = ImpactsPerBody;
+    }
+
+    /// <summary>
+    /// A body in free flight that is held still keeps the velocity it had when it stopped: gravity and forces give it
+    /// nothing more for the rest of the substep (see <see cref="Advance"/>). A body held by resting contacts moves with
+    /// the velocity the responder left it, which already has the whole substep's gain from gravity and forces in it; held
+    /// still from time T on, it forgoes the gain of the rest of the substep, a (h − T) for its acceleration a, as the
+    /// body in free flight does. Otherwise a heavy disc that jams at the start of every substep on a light one lying on
+    /// the floor stands still while its speed grows by g h a substep, and the world gains energy: 79 J in a step in
+    /// generated world 155 of 2,000 (seed 828), a 118 kg disc on a 0.09 kg one. Only as much of its velocity along a as it
+    /// has is forgone, so that a body at rest is not thrown against the acceleration: its kinetic energy only falls.
+    /// </summary>
+    private void ForgoGainWhileStill(int i)
+    {
+        Vector3 acceleration = (_forcedVelocity[i] - _startVelocity[i]) / (float)_h;
+        float squared = acceleration.LengthSquared();
+        if (squared == 0)
+        {
+            return;
+        }
+
+        float along = Vector3.Dot(_motion[i].U, acceleration) / squared; // the time a would take to give U its part along a
+        float forgone = MathF.Min((float)(_h - _motion[i].T), along);
+        if (forgone > 0)
+        {
+            _motion[i].U -= forgone * acceleration;
+        }
     }
 
     /// <summary>
