@@ -57,7 +57,8 @@ public sealed partial class SequentialImpulseSolver
         int head = 0, queued = 0;
         for (int k = 0; k < count; k++)
         {
-            _queued[k] = _joined[k] = Depth(ref _constraints[k], out _) > deep;
+            ref ContactConstraint c = ref _constraints[k];
+            _queued[k] = _joined[k] = !ClearlyWithinSlop(ref c) && Depth(ref c, out _) > deep;
             if (_queued[k])
             {
                 _deepQueue[queued++] = k;
