@@ -61,7 +61,7 @@ internal sealed partial class ImpactStepper
     private void HoldStill(int i)
     {
         _jammed = true;
-        if (_held[i] && _motion[i].Chord != Vector3.Zero)
+        if (_held[i] && _motion[i].Chord != Vector3.Zero) // once: a body already held still has no chord left
         {
             ForgoGainWhileStill(i);
         }

@@ -132,12 +132,8 @@ public class WorldLaws
         World? oneThread = null;
         if (inStrips)
         {
-            ((SequentialImpulseSolver)world.Responder).Strips = 8;
-            ((SequentialImpulseSolver)world.Responder).Cut.ContactsPerStrip = 1;
-            world.ThreadCount = 2;
-            oneThread = c.Build(out _);
-            ((SequentialImpulseSolver)oneThread.Responder).Strips = 8;
-            ((SequentialImpulseSolver)oneThread.Responder).Cut.ContactsPerStrip = 1;
+            CutIntoStrips(world).ThreadCount = 2;
+            oneThread = CutIntoStrips(c.Build(out _));
         }
 
         try
@@ -191,6 +187,15 @@ public class WorldLaws
         {
             world.ThreadCount = 1;
         }
+    }
+
+    /// <summary>Up to 8 strips however few the contacts (one contact a strip at least), for the property in strips.</summary>
+    private static World CutIntoStrips(World world)
+    {
+        var solver = (SequentialImpulseSolver)world.Responder;
+        solver.Strips = 8;
+        solver.Cut.ContactsPerStrip = 1;
+        return world;
     }
 
     /// <summary>
