@@ -18,20 +18,39 @@ internal sealed partial class ImpactStepper
 
     /// <summary>
     /// Grows body i's sphere to cover its path for the rest of the step and adds a contact for every body and plane
-    /// it may now reach that has none yet (brute force over the world: this is rare).
+    /// it may now reach that has none yet (brute force over the world: this is rare). A sleeping body it may reach
+    /// wakes with its island (<see cref="World.WakeSleepersInPath"/>): detection and waking at the start of the step
+    /// looked only as far as each body's speed then, and a slow body knocked into a sleeping pile would otherwise pass
+    /// into it. The woken bodies join the substep at rest and look up their own neighbours and planes the same way,
+    /// since they had no contacts this step.
     /// </summary>
     private void Search(StepContext step, int i, float stepTimeLeft)
     {
+        int firstWoken = _bodyCount;
+        SearchFrom(step, i, stepTimeLeft);
+        for (int j = firstWoken; j < _bodyCount; j++) // _bodyCount grows while searches wake more
+        {
+            SearchFrom(step, j, stepTimeLeft);
+        }
+    }
+
+    private void SearchFrom(StepContext step, int i, float stepTimeLeft)
+    {
         Searches++;
-        ReadOnlySpan<RigidBody> bodies = step.Bodies;
-        CollisionData contacts = step.Contacts;
-        RigidBody body = bodies[i];
+        RigidBody body = step.Bodies[i];
         Vector3 end = _motion[i].X + _motion[i].Chord * (float)(_h - _motion[i].T);
         float speed = MathF.Max(_motion[i].Chord.Length(), (_motion[i].U + _motion[i].A * (float)(_h - _motion[i].T)).Length());
         _reach[i] = MathF.Max(2 * _reach[i], Vector3.Distance(end, _sphereCentre[i]) + speed * stepTimeLeft);
         EnsureLinked();
         Vector3 start = _sphereCentre[i];
         float ownReach = body.radius + _reach[i];
+        if (body.IsDynamic && step.World.WakeSleepersInPath(body, start, ownReach, 0.5f * _margin))
+        {
+            AdmitWokenBodies(step);
+        }
+
+        ReadOnlySpan<RigidBody> bodies = step.Bodies;
+        CollisionData contacts = step.Contacts;
         for (int j = 0; j < bodies.Length; j++)
         {
             // The spheres first, from the pass's own arrays: most bodies are far, and are rejected without being read.
@@ -72,6 +91,27 @@ internal sealed partial class ImpactStepper
                 AddContact(contacts, contact);
             }
         }
+    }
+
+    /// <summary>
+    /// Gives the bodies just woken (at the end of the step's bodies) the sphere detection would have given a body at
+    /// rest, and a motion at rest for the rest of the substep.
+    /// </summary>
+    private void AdmitWokenBodies(StepContext step)
+    {
+        ReadOnlySpan<RigidBody> bodies = step.Bodies;
+        EnsureBodies(bodies.Length);
+        for (int i = _bodyCount; i < bodies.Length; i++)
+        {
+            RigidBody body = bodies[i];
+            _sphereCentre[i] = body.position;
+            _reach[i] = 0.5f * _margin;
+            _startVelocity[i] = _forcedVelocity[i] = body.linearVelocity; // zero: a sleeping body lies still
+            StartMotion(body, i, (float)_h);
+            _head[i] = -1; // no contacts yet (the lists are made by now: see SearchFrom)
+        }
+
+        _bodyCount = bodies.Length;
     }
 
     private void AddContact(CollisionData contacts, in Contact contact)

@@ -98,6 +98,7 @@ internal sealed partial class ImpactStepper
     private double _h;
     private long _stepNumber;
     private float _depthCap = float.PositiveInfinity; // see DepthCap
+    private float _margin; // detection's margin this step (see BeginStep)
     private bool _noGravity; // bodies move, and pairs are predicted and measured, in double precision (see Precision)
 
     /// <summary>
@@ -135,6 +136,7 @@ internal sealed partial class ImpactStepper
     {
         int n = bodies.Length;
         EnsureBodies(n);
+        _margin = margin;
         for (int i = 0; i < n; i++)
         {
             RigidBody body = bodies[i];
@@ -170,36 +172,7 @@ internal sealed partial class ImpactStepper
         int n = bodies.Length;
         for (int i = 0; i < n; i++)
         {
-            RigidBody body = bodies[i];
-            _motion[i].X = body.position;
-            _motion[i].Radius = body.radius;
-            _held[i] = body.linearVelocity != _forcedVelocity[i];
-            _motion[i].PreciseX = _noGravity ? body.PreciseCentre : new Vector3D(body.position);
-            if (!_held[i])
-            {
-                // Free flight: from v₀ to v₁ at the uniform rate of gravity and forces, along a parabola.
-                _motion[i].U = _startVelocity[i];
-                _motion[i].A = (body.linearVelocity - _startVelocity[i]) / h;
-                _motion[i].Chord = 0.5f * (_startVelocity[i] + body.linearVelocity);
-            }
-            else
-            {
-                // Held by resting contacts: it moves with the velocity the responder left (semi-implicit Euler),
-                // which is what keeps a pile from sinking into itself.
-                _motion[i].U = _motion[i].Chord = body.linearVelocity;
-                _motion[i].A = Vector3.Zero;
-            }
-
-            _motion[i].T = 0;
-            _motion[i].Version = 0;
-            _motion[i].Impacts = 0;
-            if (body.Type == BodyType.Static)
-            {
-                _motion[i].U = _motion[i].A = _motion[i].Chord = Vector3.Zero;
-            }
-
-            _substepStart[i] = _motion[i].PreciseX;
-            _startChord[i] = _motion[i].Chord;
+            StartMotion(bodies[i], i, h);
         }
 
         _contacts = contacts.Storage;
@@ -215,7 +188,7 @@ internal sealed partial class ImpactStepper
             Predict(k);
         }
 
-        for (int i = 0; i < n; i++)
+        for (int i = 0; i < n; i++) // not the bodies a search wakes: they join at the end, at rest
         {
             if (LeavesReach(i))
             {
@@ -236,7 +209,7 @@ internal sealed partial class ImpactStepper
 
             if (++impacts > limit)
             {
-                StopAll(n);
+                StopAll(_bodyCount);
                 SaturatedSubsteps++;
                 break;
             }
@@ -266,7 +239,8 @@ internal sealed partial class ImpactStepper
             }
         }
 
-        for (int i = 0; i < n; i++)
+        bodies = step.Bodies; // with any woken by a search (ImpactStepper.Search.cs)
+        for (int i = 0; i < _bodyCount; i++)
         {
             Advance(bodies[i], i, h);
             if (bodies[i].Type != BodyType.Static)
@@ -283,6 +257,40 @@ internal sealed partial class ImpactStepper
         }
 
         _contacts = Array.Empty<Contact>(); // not kept between substeps: the world's storage may shrink or grow
+    }
+
+    /// <summary>Body <paramref name="i"/>'s motion at the start of the substep, from its velocity before and after gravity, forces and resting contacts.</summary>
+    private void StartMotion(RigidBody body, int i, float h)
+    {
+        _motion[i].X = body.position;
+        _motion[i].Radius = body.radius;
+        _held[i] = body.linearVelocity != _forcedVelocity[i];
+        _motion[i].PreciseX = _noGravity ? body.PreciseCentre : new Vector3D(body.position);
+        if (!_held[i])
+        {
+            // Free flight: from v₀ to v₁ at the uniform rate of gravity and forces, along a parabola.
+            _motion[i].U = _startVelocity[i];
+            _motion[i].A = (body.linearVelocity - _startVelocity[i]) / h;
+            _motion[i].Chord = 0.5f * (_startVelocity[i] + body.linearVelocity);
+        }
+        else
+        {
+            // Held by resting contacts: it moves with the velocity the responder left (semi-implicit Euler),
+            // which is what keeps a pile from sinking into itself.
+            _motion[i].U = _motion[i].Chord = body.linearVelocity;
+            _motion[i].A = Vector3.Zero;
+        }
+
+        _motion[i].T = 0;
+        _motion[i].Version = 0;
+        _motion[i].Impacts = 0;
+        if (body.Type == BodyType.Static)
+        {
+            _motion[i].U = _motion[i].A = _motion[i].Chord = Vector3.Zero;
+        }
+
+        _substepStart[i] = _motion[i].PreciseX;
+        _startChord[i] = _motion[i].Chord;
     }
 
     /// <summary>

@@ -42,7 +42,10 @@ public sealed class StepContext
 
     /// <summary>
     /// The world's awake bodies: all of them, in the world's order, while none sleeps (see
-    /// <see cref="World.SleepingEnabled"/>); sleeping bodies take no part in a step.
+    /// <see cref="World.SleepingEnabled"/>); sleeping bodies take no part in a step. The list may grow during a step,
+    /// never shrink: a body that a collision sends into a sleeping island wakes it within the step, and its bodies
+    /// join at the end of the list, at rest. Read it again in each stage rather than keep its length from
+    /// <see cref="ICollisionResponder.BeginStep"/>.
     /// </summary>
     public ReadOnlySpan<RigidBody> Bodies => World.BodySpan;
 

@@ -127,6 +127,7 @@ public sealed partial class World
     private void ReportContactEvents()
     {
         _queryVersion++; // the bodies have moved: the query grid must be rebuilt
+        RegroupSleepingTouches(); // the touches of islands the impact pass woke during the step are no longer held
         ContactEvents events = _contactEvents;
         events.Clear();
 

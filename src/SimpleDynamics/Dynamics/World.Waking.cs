@@ -51,6 +51,39 @@ public sealed partial class World
         RegroupSleepingTouches();
     }
 
+    /// <summary>
+    /// During the impact pass: wakes the island of every sleeping body that a body's path may now reach, because a
+    /// collision has sent it further within the step than waking and detection looked at its start (the impact pass's
+    /// search, ImpactStepper.Search.cs). A sleeper is reached when its sphere, grown by <paramref name="margin"/>, meets
+    /// the sphere of radius <paramref name="reach"/> around <paramref name="centre"/>. The woken bodies join the step's
+    /// bodies at the end (<see cref="BodySpan"/>), at rest, so the bodies already stepping keep their places. Returns
+    /// whether any woke.
+    /// </summary>
+    internal bool WakeSleepersInPath(RigidBody body, Vector3 centre, float reach, float margin)
+    {
+        if (_sleepingCount == 0 || body.isSensor)
+        {
+            return false;
+        }
+
+        QueryGrid sleepers = CurrentSleepGrid();
+        sleepers.GatherBox(centre - new Vector3(reach), centre + new Vector3(reach));
+        bool woke = false;
+        foreach (int slot in sleepers.Candidates)
+        {
+            RigidBody sleeper = sleepers.BodyAt(slot);
+            float meet = reach + sleeper.radius + margin;
+            if (!sleeper.IsAwake && sleeper.World == this && PairFilter.Allows(body, sleeper) &&
+                Vector3.DistanceSquared(centre, sleeper.position) < meet * meet)
+            {
+                WakeIslandNow(sleeper); // the grid is only read again after this loop, and rebuilt then
+                woke = true;
+            }
+        }
+
+        return woke;
+    }
+
     /// <summary>Wakes the island of a sleeping body; during a step, before the next step's detection.</summary>
     internal void WakeIsland(RigidBody body)
     {

@@ -27,6 +27,7 @@ public sealed partial class SequentialImpulseSolver
     private Vector3 _gravity;
     private bool _planar;
     private int _extraSweeps; // this step's budget of extra sweeps per substep (see ExtraSweepsFor)
+    private int _gatheredBodies; // the bodies given slots this step (GatherBodies, AdmitWokenBodies)
 
     /// <summary>The extra sweeps per substep the last step began could spend (see <see cref="DeepPileLayers"/>), for tests.</summary>
     internal int ExtraSweepBudget => _extraSweeps;
@@ -76,10 +77,44 @@ public sealed partial class SequentialImpulseSolver
         _inertiaScalars[0] = 0;
         for (int i = 0; i < n; i++)
         {
-            RigidBody body = bodies[i];
-            _radii[_slotOf[i]] = body.radius;
-            _inertiaScalars[_slotOf[i]] = !body.IsDynamic ? 0f : body.isotropic ? body.inverseInertia.M11 : float.NaN;
+            GatherShape(bodies[i], _slotOf[i]);
         }
+
+        _gatheredBodies = n;
+    }
+
+    private void GatherShape(RigidBody body, int slot)
+    {
+        _radii[slot] = body.radius;
+        _inertiaScalars[slot] = !body.IsDynamic ? 0f : body.isotropic ? body.inverseInertia.M11 : float.NaN;
+    }
+
+    /// <summary>
+    /// Gives slots to the bodies the impact pass woke during the step (a body knocked into a sleeping pile wakes it:
+    /// see World.WakeSleepersInPath). They join the step's bodies at the end, so their slots follow the others'.
+    /// </summary>
+    private void AdmitWokenBodies(ReadOnlySpan<RigidBody> bodies)
+    {
+        int n = bodies.Length;
+        if (n == _gatheredBodies)
+        {
+            return;
+        }
+
+        Buffers.EnsureCapacity(ref _bodies, n + 1);
+        Buffers.EnsureCapacity(ref _positions, n + 1);
+        Buffers.EnsureCapacity(ref _slotOf, n);
+        Buffers.EnsureCapacity(ref _radii, n + 1);
+        Buffers.EnsureCapacity(ref _inertiaScalars, n + 1);
+        for (int i = _gatheredBodies; i < n; i++)
+        {
+            _slotOf[i] = i + 1; // the slots of the bodies gathered at the start of the step are 1 … _gatheredBodies
+            GatherShape(bodies[i], i + 1);
+        }
+
+        // The planar path leaves out the second tangent; a woken body that leaves the plane ends it for the step.
+        _planar &= IsPlanar(bodies.Slice(_gatheredBodies), _gravity);
+        _gatheredBodies = n;
     }
 
     /// <summary>

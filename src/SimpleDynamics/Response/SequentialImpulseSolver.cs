@@ -309,6 +309,7 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
     {
         CheckStage(step, StepStage.SolveVelocities);
         Span<Contact> contacts = step.Contacts.Contacts;
+        AdmitWokenBodies(step.Bodies); // any the impact pass woke during the last substep
         PrepareConstraints(contacts); // any the impact pass added during the last substep
         GatherState(step.Bodies);
         MeasureConstraints(contacts);
@@ -359,6 +360,7 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
     public void SolvePositions(StepContext step)
     {
         CheckStage(step, StepStage.SolvePositions);
+        AdmitWokenBodies(step.Bodies);
         CorrectPositions(step.Bodies, step.Contacts.Count);
     }
 

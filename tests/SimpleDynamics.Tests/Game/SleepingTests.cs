@@ -228,6 +228,48 @@ public class SleepingTests
         Assert.All(right, b => Assert.False(b.IsAwake));
     }
 
+    /// <summary>
+    /// Waking at the start of a step looks only as far as each body's speed then reaches. Here a light ball lies 5 cm
+    /// from a sleeping disc, and a heavy ball strikes it at 6 m/s early in a step, sending it at about 9 m/s across
+    /// the gap within the same step: the impact pass looks the ball up again along its new path, finds the sleeper,
+    /// wakes it and answers the collision (before, the ball ended the step 9 cm inside the sleeping disc, which woke
+    /// only a step later).
+    /// </summary>
+    [Fact]
+    public void A_ball_knocked_into_a_sleeping_body_within_a_step_wakes_it_and_does_not_pass_into_it()
+    {
+        var world = new World(new Vector3(0, -9.81f, 0));
+        world.AddPlane(new StaticPlane(Vector3.UnitY, Vector3.Zero));
+        RigidBody sleeper = world.Add(new RigidBody(10f, Radius, new Vector3(0, Radius, 0), Inertia.Disc(10f, Radius)));
+        StepUntilAsleep(world, dynamic: 1);
+        RigidBody light = world.Add(new RigidBody(0.1f, 0.1f, new Vector3(Radius + 0.15f, Radius, 0), Inertia.Disc(0.1f, 0.1f)));
+        RigidBody heavy = world.Add(new RigidBody(10f, 0.1f, new Vector3(Radius + 0.355f, Radius, 0), Inertia.Disc(10f, 0.1f)));
+        heavy.LinearVelocity = new Vector3(-6f, 0, 0);
+        RigidBody[] bodies = [sleeper, light, heavy];
+        float slop = ((Response.SequentialImpulseSolver)world.Responder).Slop;
+
+        for (int step = 0; step < 60; step++)
+        {
+            world.Step(Dt);
+            for (int i = 0; i < bodies.Length; i++)
+            {
+                for (int j = i + 1; j < bodies.Length; j++)
+                {
+                    float overlap = bodies[i].Radius + bodies[j].Radius - Vector3.Distance(bodies[i].Position, bodies[j].Position);
+                    Assert.True(overlap <= slop + 1e-5f, $"step {step}: bodies {i} and {j} overlap by {overlap} m");
+                }
+            }
+
+            if (step == 0)
+            {
+                Assert.True(light.LinearVelocity.X < -1f, $"the light ball was struck: {light.LinearVelocity}");
+                Assert.True(sleeper.IsAwake, "the sleeper in the light ball's new path woke within the step");
+            }
+        }
+
+        Assert.True(sleeper.Position.X < -0.05f, $"the balls pushed the woken disc along: it is at {sleeper.Position}");
+    }
+
     [Fact]
     public void A_kinematic_body_at_rest_holds_an_island_and_one_that_moves_keeps_it_awake()
     {
