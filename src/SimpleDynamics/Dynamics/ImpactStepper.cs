@@ -99,6 +99,7 @@ internal sealed partial class ImpactStepper
     private long _stepNumber;
     private float _depthCap = float.PositiveInfinity; // see DepthCap
     private float _margin; // detection's margin this step (see BeginStep)
+    private bool _supports; // whether a body resting on something immovable is held up by it (see RestOnImmovable)
     private bool _noGravity; // bodies move, and pairs are predicted and measured, in double precision (see Precision)
 
     /// <summary>
@@ -169,6 +170,7 @@ internal sealed partial class ImpactStepper
         _stepNumber = step.StepNumber;
         _noGravity = world.Gravity == Vector3.Zero;
         _depthCap = DepthCap(responder, _noGravity);
+        _supports = responder is SequentialImpulseSolver; // see RestOnImmovable
         int n = bodies.Length;
         for (int i = 0; i < n; i++)
         {
@@ -358,11 +360,76 @@ internal sealed partial class ImpactStepper
             _motion[b].U = bodyB.linearVelocity;
         }
 
+        RestoreAcceleration(a); // a support found at an earlier impact may have been left (see RestOnImmovable)
+        if (b >= 0)
+        {
+            RestoreAcceleration(b);
+        }
+
+        RestOnImmovable(ref contact, a, b);
         StopApproach(ref contact, a, b);
         _motion[a].Chord = _motion[a].U + 0.5f * (float)(_h - _motion[a].T) * _motion[a].A;
         if (b >= 0)
         {
             _motion[b].Chord = _motion[b].U + 0.5f * (float)(_h - _motion[b].T) * _motion[b].A;
+        }
+    }
+
+    /// <summary>Body i's acceleration in free flight (gravity and forces); zero while resting contacts hold it.</summary>
+    private void RestoreAcceleration(int i)
+    {
+        if (!_held[i])
+        {
+            _motion[i].A = (_forcedVelocity[i] - _startVelocity[i]) / (float)_h;
+        }
+    }
+
+    /// <summary>
+    /// A body that an impact leaves touching something immovable (a plane, a static or kinematic body), and not moving
+    /// away from it, rests on it for the rest of the substep: the support cancels the part of its acceleration that
+    /// presses into it, as the contact force on a resting body cancels its weight. Otherwise the pair is stopped along
+    /// its chord (<see cref="StopApproach"/>), which keeps the body in touch by giving it now the speed away from the
+    /// support that the acceleration takes back by the end of the substep, and it ends the substep at the support with
+    /// that speed into it, ½ g (h − t) for a landing under gravity at time t: kinetic energy it never earned, since it
+    /// fell no further (a 36 kg ball landing at 0.07 m/s early in a substep of 1/30 s ended it 0.15 m/s into the floor,
+    /// 0.17 J more than it began with: generated world 1,089 of seed 916). A later impact gives the body its free flight
+    /// back (<see cref="RestoreAcceleration"/>), and the support is found again if it still rests. The support's
+    /// impulse over the rest of the substep is added to the contact's. Only with the default solver, whose resting
+    /// contacts carry the weight, and its friction, from the next substep on: a pairwise responder carries a resting
+    /// body's weight through its impacts alone, each substep's impact answering the speed into the floor that the last
+    /// one left, and its friction comes from those (a ball set sliding reaches rolling only so).
+    /// </summary>
+    private void RestOnImmovable(ref Contact contact, int a, int b)
+    {
+        if (!_supports)
+        {
+            return;
+        }
+
+        Vector3 n = contact.Normal; // from B towards A
+        int resting;
+        Vector3 into; // from the resting body into its support
+        if (contact.BodyB.inverseMass == 0 && contact.BodyA.inverseMass > 0)
+        {
+            (resting, into) = (a, -n);
+        }
+        else if (contact.BodyA.inverseMass == 0 && b >= 0 && contact.BodyB.inverseMass > 0)
+        {
+            (resting, into) = (b, n);
+        }
+        else
+        {
+            return;
+        }
+
+        Vector3 velocityB = b >= 0 ? _motion[b].U : Vector3.Zero;
+        float separating = Vector3.Dot(_motion[a].U - velocityB, n);
+        float pressing = Vector3.Dot(_motion[resting].A, into);
+        if (pressing > 0 && separating <= (float)ClosingTolerance * (_motion[a].U.Length() + velocityB.Length()))
+        {
+            _motion[resting].A -= pressing * into;
+            RigidBody body = resting == a ? contact.BodyA : contact.BodyB;
+            contact.NormalImpulse += pressing * (float)(_h - _motion[resting].T) / body.inverseMass; // what the support gives
         }
     }
 

@@ -116,6 +116,35 @@ public class ImpactTimingTests
         Assert.True(highest <= 3f * 1.005f, $"rose to {highest} m from 3 m");
     }
 
+    /// <summary>
+    /// A ball 0.6 mm above the floor, sinking at 3.7 cm/s, lands within a substep of 1/30 s, too slowly to bounce. It
+    /// ends the step at rest on the floor: no speed into it, and no more mechanical energy than it began with (it ended
+    /// 0.15 m/s into the floor, the speed gravity would have given it over the rest of the substep had the floor not
+    /// held it up, in generated world 1,089 of seed 916). The floor's impulse over the step is the landing's plus the
+    /// weight it carried after.
+    /// </summary>
+    [Fact]
+    public void A_ball_that_lands_gently_within_a_substep_ends_it_resting_on_the_floor()
+    {
+        var world = new World(Scenes.EarthGravity) { Substeps = 1, SleepingEnabled = false };
+        world.AddPlane(StaticPlane.Ground());
+        const float mass = 36.5f, radius = 0.185f, dt = 1f / 30f;
+        var ball = world.Add(new RigidBody(mass, radius, new Vector3(0, radius + 0.0006f, 0), Inertia.SolidSphere(mass, radius)));
+        ball.LinearVelocity = new Vector3(0.2f, -0.0366f, 0);
+        double Energy() => 0.5 * mass * ball.LinearVelocity.LengthSquared() + mass * 9.81 * ball.Position.Y;
+        double before = Energy();
+
+        world.Step(dt);
+
+        _output.WriteLine($"y = {ball.Position.Y}, v = {ball.LinearVelocity}, floor impulse {world.Collisions.Contacts[0].NormalImpulse} N s");
+        Assert.InRange(ball.Position.Y, radius - 1e-6f, radius + 1e-6f);
+        Assert.InRange(ball.LinearVelocity.Y, -1e-4f, 1e-4f);
+        Assert.True(Energy() <= before, $"mechanical energy rose from {before} to {Energy()} J");
+        float landing = mass * (0.0366f + 9.81f * 0.0030f); // the speed it lands with, about 3 ms into the step
+        Assert.InRange(world.Collisions.Contacts[0].NormalImpulse, 0.95f * mass * (0.0366f + 9.81f * dt), 1.05f * mass * (0.0366f + 9.81f * dt));
+        Assert.True(world.Collisions.Contacts[0].NormalImpulse > landing);
+    }
+
     [Theory]
     [InlineData(50f)]
     [InlineData(1e4f)]
