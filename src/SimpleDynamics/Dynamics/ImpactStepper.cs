@@ -20,7 +20,9 @@ namespace SimpleDynamics;
 /// free-flight position. Impacts are found on the chord of that parabola (a straight line, so the time of impact of
 /// two spheres is a quadratic's root), which lies within ⅛ |a| h² of the parabola. At an impact the responder sees
 /// the true velocity v₀ + a t, not the end-of-substep velocity: a ball that meets the ground bounces with the speed
-/// it arrives with, so a bounce with ε = 1 keeps the ball's mechanical energy and its apex.</para>
+/// it arrives with, so a bounce with ε = 1 keeps the ball's mechanical energy and its apex. A body that an impact
+/// leaves resting on something immovable is held up by it from then on (see RestOnImmovable), so a ball that lands
+/// within a substep ends it at rest on the floor.</para>
 /// <para><b>Depth limit.</b> Two bodies apart at the start of the substep collide when they touch. Two bodies
 /// already touching collide as soon as they approach, unless a body is held by resting contacts and the pair only
 /// creeps (it would sink less than <see cref="HeldDepthTolerance"/> of the smaller radius in the substep): then they
