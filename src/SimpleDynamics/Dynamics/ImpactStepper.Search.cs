@@ -17,6 +17,25 @@ internal sealed partial class ImpactStepper
     }
 
     /// <summary>
+    /// Whether body i, whose velocity an impact has just changed, may now reach a sleeping body within the sphere
+    /// detection covered for it: waking at the start of the step woke only the sleepers a body approached then, and an
+    /// impact can turn it towards one (a light disc landing beside a sleeping 54 kg one, its spin turned by friction into
+    /// 0.25 m/s towards it, ended the step 1.3 mm inside it: generated world 645 of seed 1,178). Asks the sleeping
+    /// bodies' grid only while some sleep; the search that follows wakes them (see <see cref="Search"/>).
+    /// </summary>
+    private bool MayReachSleepers(StepContext step, int i)
+    {
+        World world = step.World;
+        if (world.SleepingBodyCount == 0)
+        {
+            return false;
+        }
+
+        RigidBody body = step.Bodies[i];
+        return body.IsDynamic && world.AnySleeperInPath(body, _sphereCentre[i], body.radius + _reach[i], 0.5f * _margin);
+    }
+
+    /// <summary>
     /// Grows body i's sphere to cover its path for the rest of the step and adds a contact for every body and plane
     /// it may now reach that has none yet (brute force over the world: this is rare). A sleeping body it may reach
     /// wakes with its island (<see cref="World.WakeSleepersInPath"/>): detection and waking at the start of the step

@@ -226,12 +226,12 @@ internal sealed partial class ImpactStepper
                 _motion[b].Version++;
             }
 
-            if (LeavesReach(a))
+            if (LeavesReach(a) || MayReachSleepers(step, a))
             {
                 Search(step, a, stepTimeLeft);
             }
 
-            if (b >= 0 && LeavesReach(b))
+            if (b >= 0 && (LeavesReach(b) || MayReachSleepers(step, b)))
             {
                 Search(step, b, stepTimeLeft);
             }

@@ -59,7 +59,14 @@ public sealed partial class World
     /// bodies at the end (<see cref="BodySpan"/>), at rest, so the bodies already stepping keep their places. Returns
     /// whether any woke.
     /// </summary>
-    internal bool WakeSleepersInPath(RigidBody body, Vector3 centre, float reach, float margin)
+    internal bool WakeSleepersInPath(RigidBody body, Vector3 centre, float reach, float margin) =>
+        SleepersInPath(body, centre, reach, margin, wake: true);
+
+    /// <summary>Whether <see cref="WakeSleepersInPath"/> would wake any sleeping body; wakes none.</summary>
+    internal bool AnySleeperInPath(RigidBody body, Vector3 centre, float reach, float margin) =>
+        SleepersInPath(body, centre, reach, margin, wake: false);
+
+    private bool SleepersInPath(RigidBody body, Vector3 centre, float reach, float margin, bool wake)
     {
         if (_sleepingCount == 0 || body.isSensor)
         {
@@ -68,7 +75,7 @@ public sealed partial class World
 
         QueryGrid sleepers = CurrentSleepGrid();
         sleepers.GatherBox(centre - new Vector3(reach), centre + new Vector3(reach));
-        bool woke = false;
+        bool found = false;
         foreach (int slot in sleepers.Candidates)
         {
             RigidBody sleeper = sleepers.BodyAt(slot);
@@ -76,12 +83,17 @@ public sealed partial class World
             if (!sleeper.IsAwake && sleeper.World == this && PairFilter.Allows(body, sleeper) &&
                 Vector3.DistanceSquared(centre, sleeper.position) < meet * meet)
             {
+                if (!wake)
+                {
+                    return true;
+                }
+
                 WakeIslandNow(sleeper); // the grid is only read again after this loop, and rebuilt then
-                woke = true;
+                found = true;
             }
         }
 
-        return woke;
+        return found;
     }
 
     /// <summary>Wakes the island of a sleeping body; during a step, before the next step's detection.</summary>
