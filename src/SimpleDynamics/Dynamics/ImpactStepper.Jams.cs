@@ -83,7 +83,7 @@ internal sealed partial class ImpactStepper
     /// </summary>
     private void ForgoGainWhileStill(int i)
     {
-        Vector3 acceleration = (_forcedVelocity[i] - _startVelocity[i]) / (float)_h;
+        Vector3 acceleration = ForcedAcceleration(i);
         float squared = acceleration.LengthSquared();
         if (squared == 0)
         {
