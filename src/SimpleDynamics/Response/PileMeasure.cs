@@ -52,6 +52,9 @@ internal struct PileMeasure
         }
     }
 
+    /// <summary>The mean diameter of the bodies of the pile's contacts (0 when no contact rests).</summary>
+    public readonly float MeanDiameter => _count == 0 ? 0 : (float)(_diameters / _count);
+
     /// <summary>The pile's depth in mean diameters (0 without gravity, or when no contact rests).</summary>
     public readonly float Layers => _count == 0 || _g == 0 ? 0 : (float)((_highest - _lowest) / (_g * _diameters / _count));
 }

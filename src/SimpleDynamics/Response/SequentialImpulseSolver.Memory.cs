@@ -30,6 +30,7 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
 
         ShrinkBodies(InitialCapacity);
         ShrinkContacts(InitialCapacity);
+        ShrinkBands(InitialCapacity);
         _heightOrder.TrimExcess();
     }
 
@@ -71,6 +72,18 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         _positionContactsOfBodies.ShrinkBodies(capacity);
         _strips.ShrinkBodies(capacity);
         Buffers.ShrinkTo(ref _bodyScratch, capacity, 0);
+        Buffers.ShrinkTo(ref _bandSums, 2 * capacity, 0);
+        Buffers.ShrinkTo(ref _bandOfSum, 2 * capacity, 0);
+    }
+
+    /// <summary>The layer correction's arrays per band (SequentialImpulseSolver.Layers.cs): at most 4,096 bands, so only on request.</summary>
+    private void ShrinkBands(int capacity)
+    {
+        Buffers.ShrinkTo(ref _bandDiagonal, capacity, 0);
+        Buffers.ShrinkTo(ref _bandUpper, capacity, 0);
+        Buffers.ShrinkTo(ref _bandResidual, capacity, 0);
+        Buffers.ShrinkTo(ref _bandFactor, capacity, 0);
+        Buffers.ShrinkTo(ref _bandEliminated, capacity, 0);
     }
 
     private void ShrinkContacts(int capacity)
@@ -90,5 +103,6 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         _positionMarks.Shrink(capacity);
         _strips.ShrinkContacts(capacity);
         Buffers.ShrinkTo(ref _contactScratch, capacity, 0);
+        Buffers.ShrinkTo(ref _bandOf, capacity, 0);
     }
 }

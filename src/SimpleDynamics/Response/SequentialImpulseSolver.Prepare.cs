@@ -211,6 +211,7 @@ public sealed partial class SequentialImpulseSolver
         }
 
         _extraSweeps = ExtraSweepsFor(pile.Layers);
+        _meanDiameter = pile.MeanDiameter;
     }
 
     // The most a deep pile's budget may grow: 28 × ExtraIterations (224 sweeps at the default) covers the
@@ -312,6 +313,7 @@ public sealed partial class SequentialImpulseSolver
         Buffers.EnsureCapacity(ref _active, contacts.Length);
         _activeCount = 0;
         _substepInStrips = false;
+        _bandsAssigned = false;
         for (int k = 0; k < contacts.Length; k++)
         {
             ref ContactConstraint c = ref _constraints[k];

@@ -89,6 +89,10 @@ public sealed partial class SequentialImpulseSolver
         for (; extra < _extraSweeps && !converged; extra++)
         {
             converged = Sweep() <= _convergenceTolerance;
+            if (!converged && extra >= 2 * _extraIterations && extra + 1 < _extraSweeps && CorrectsLayers)
+            {
+                CorrectLayers(); // a deep pile's smooth error, which sweeps carry only a few layers (see LayerCorrection)
+            }
         }
     }
 

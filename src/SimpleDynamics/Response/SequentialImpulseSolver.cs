@@ -298,6 +298,7 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
         _prepared = 0;
         SweepsThisStep = 0;
         LocalSweepsThisStep = 0;
+        LayerCorrectionsThisStep = 0;
         LocalSolvesThisStep = 0;
         PositionVisitsThisStep = 0;
         _positionListsCount = -1; // the contacts are new: list them again (SequentialImpulseSolver.Positions.cs)

@@ -1,0 +1,233 @@
+using System;
+using System.Globalization;
+using System.Numerics;
+using FsCheck;
+using FsCheck.Fluent;
+using SimpleDynamics.Bodies;
+using SimpleDynamics.Collision;
+using SimpleDynamics.Response;
+using SimpleDynamics.Tests.Properties;
+using Xunit;
+using Xunit.Abstractions;
+
+namespace SimpleDynamics.Tests.Solver;
+
+/// <summary>
+/// A deep pile's layer correction (SequentialImpulseSolver.Layers.cs): between extra sweeps each horizontal band of
+/// the pile scales its normal impulses by one factor. It must keep the laws of every impulse (no kinetic energy added,
+/// momentum changed only through the ground and walls, no contact pulling), and it must help the sweeps converge.
+/// </summary>
+public class LayerCorrectionTests
+{
+    private const float Dt = 1f / 60f;
+    private readonly ITestOutputHelper _output;
+
+    public LayerCorrectionTests(ITestOutputHelper output) => _output = output;
+
+    /// <summary>
+    /// A generated deep pile, standing at rest from its first step: <see cref="Deep"/> layers packed as densely as
+    /// equal bodies pack (in 2-D each row in the hollows of the row below, √3 r above it; in 3-D each square layer in the
+    /// hollows of the one below, √2 r above it), <see cref="Wide"/> bodies across (per side, in 3-D), in a box that
+    /// just holds them. Radii spread up to <see cref="RadiusSpread"/> times the smallest (the lattice is that of the
+    /// largest: smaller bodies drop a little into place), masses log-uniformly over a factor <see cref="MassSpread"/>
+    /// either way. Its support must reach the floor through every layer from impulses that start at zero: the deep
+    /// pile's problem, at once.
+    /// </summary>
+    public sealed record DeepPile(bool Planar, int Wide, int Deep, float RadiusSpread, float MassSpread, float Friction, float Restitution, int Substeps, int ExtraIterations, float Tolerance, int Seed)
+    {
+        private const float Radius = 0.1f;
+
+        /// <summary>The pile in a world of its own, stepped by <paramref name="solver"/> (given its <see cref="ExtraIterations"/> and tolerance).</summary>
+        public World Build(SequentialImpulseSolver solver)
+        {
+            solver.ExtraIterations = ExtraIterations;
+            solver.ConvergenceTolerance = Tolerance;
+            float largest = Radius * RadiusSpread, spacing = 2 * largest * 1.0001f;
+            float rise = (Planar ? MathF.Sqrt(3) : MathF.Sqrt(2)) * largest * 1.0001f;
+            var world = new World(Scenes.EarthGravity, solver) { Substeps = Substeps, SleepingEnabled = false };
+            float across = Wide * spacing + 0.01f * largest;
+            world.AddPlanes(StaticPlane.Box(Vector3.Zero, new Vector3(across, 2 * Deep * spacing, Planar ? 0 : across), Planar));
+            var random = new Random(Seed);
+            for (int layer = 0; layer < Deep; layer++)
+            {
+                bool shifted = layer % 2 == 1; // in the hollows of the layer below: half a spacing along (and across, in 3-D)
+                int count = shifted ? Wide - 1 : Wide;
+                for (int i = 0; i < count; i++)
+                {
+                    for (int k = 0; k < (Planar ? 1 : count); k++)
+                    {
+                        float radius = Radius * (1 + (float)random.NextDouble() * (RadiusSpread - 1));
+                        float mass = radius * radius * MathF.Pow(MassSpread, 2 * (float)random.NextDouble() - 1);
+                        float offset = shifted ? spacing : spacing / 2;
+                        var position = new Vector3(offset + i * spacing, radius + layer * rise, Planar ? 0 : offset + k * spacing);
+                        world.Add(new RigidBody(mass, radius, position, Planar ? Inertia.Disc(mass, radius) : Inertia.SolidSphere(mass, radius)));
+                    }
+                }
+            }
+
+            return world;
+        }
+
+        public override string ToString() => string.Create(CultureInfo.InvariantCulture,
+            $"{(Planar ? "2-D" : "3-D")} {Wide} wide, {Deep} deep, radii ×{RadiusSpread:R}, masses ×{MassSpread:R}, mu={Friction:R} eps={Restitution:R} substeps={Substeps} extra iterations={ExtraIterations} tolerance={Tolerance:R} seed={Seed}");
+    }
+
+    private static Gen<DeepPile> Piles { get; } =
+        from planar in Gen.Elements(true, true, false)
+        from wide in Gen.Choose(planar ? 3 : 2, planar ? 8 : 3)
+        from deep in Gen.Choose(36, 56)
+        from radiusSpread in Gen.OneOf(Gen.Constant(1f), Gen.Constant(1f), Generators.UniformF(1, 1.25))
+        from massSpread in Gen.OneOf(Gen.Constant(1f), Generators.LogUniform(1, 30))
+        from friction in Gen.OneOf(Gen.Elements(0f, 0.3f), Generators.UniformF(0, 1))
+        from restitution in Gen.OneOf(Gen.Elements(0f, 0.5f), Generators.UniformF(0, 1))
+        from substeps in Gen.Choose(1, 4)
+        from extraIterations in Gen.Elements(1, 2, 4, 8)
+        from tolerance in Gen.Elements(1e-3f, 1e-4f, 1e-5f) // the tighter, the more substeps go unconverged and are corrected
+        from seed in Gen.Choose(0, 1_000_000)
+        select new DeepPile(planar, wide, deep, radiusSpread, massSpread, friction, restitution, substeps, extraIterations, tolerance, seed);
+
+    /// <summary>
+    /// Over generated deep piles, for two seconds from their first step, every layer correction lowers (or keeps) the
+    /// bodies' kinetic energy, changes their momentum only by what it gave through the ground and walls, and leaves
+    /// every normal impulse ≥ 0: the step along the band factors is on the segment from 0 to the minimiser of the
+    /// convex energy, and no impulse is scaled by less than ½.
+    /// </summary>
+    [Fact]
+    public void Every_layer_correction_of_a_generated_deep_pile_keeps_the_laws_of_impulses()
+    {
+        int piles = 0, corrected = 0, corrections = 0;
+        double largestFall = 0;
+        PropertyCheck.Run(Piles, pile =>
+        {
+            var solver = new SequentialImpulseSolver(pile.Restitution, pile.Friction) { AuditLayerCorrections = true };
+            World world = pile.Build(solver);
+            for (int step = 0; step < 120; step++)
+            {
+                world.Step(Dt);
+            }
+
+            var audit = solver.Audit;
+            piles++;
+            corrected += audit.Count > 0 ? 1 : 0;
+            corrections += audit.Count;
+            largestFall = Math.Max(largestFall, audit.LargestEnergyFall);
+            Law.Holds(audit.Count == 0 || audit.LargestEnergyRise <= 1e-6,
+                $"a correction raised the kinetic energy by {audit.LargestEnergyRise:E2} of itself");
+            Law.Holds(audit.Count == 0 || audit.LargestMomentumError <= 1e-4,
+                $"a correction changed the momentum by {audit.LargestMomentumError:E2} of the impulse it moved, beyond the walls'");
+            Law.Holds(audit.Count == 0 || audit.SmallestImpulse >= 0, $"a correction left a normal impulse of {audit.SmallestImpulse}");
+        }, seed: 1601, maxTest: 40);
+
+        _output.WriteLine($"{corrected} of {piles} piles corrected, {corrections} corrections; the largest fall of the energy {largestFall:P1}");
+        Assert.True(corrected > piles / 3, $"only {corrected} of {piles} piles had a layer correction: the property checks too little");
+        Assert.True(largestFall > 1e-3, "no correction lowered the energy by as much as 0.1 %: it does nothing");
+    }
+
+    /// <summary>
+    /// 2,000 discs packed 100 deep and 20 wide, at rest, at the solver's defaults: from the first step their weight
+    /// must reach the floor through every layer, from impulses that start at zero. Measured: with the layer
+    /// correction the pile is held within 20 steps and spends 613 sweeps in steps 21–120 (about 6 a step), every disc
+    /// slower than 1e-6 m/s at 2 s and overlaps of at most 0.17 mm; without it, 9,959 sweeps, discs at up to
+    /// 1.3e-4 m/s, overlaps of 0.50 mm.
+    /// </summary>
+    [Fact]
+    public void A_deep_pile_standing_from_its_first_step_is_held_in_far_fewer_sweeps_with_the_layer_correction()
+    {
+        (long sweeps, float fastest, float deepest) Run(bool correct)
+        {
+            var pile = new DeepPile(Planar: true, Wide: 20, Deep: 100, RadiusSpread: 1f, MassSpread: 1f, Friction: 0.3f, Restitution: 0f, Substeps: 4, ExtraIterations: 8, Tolerance: 1e-3f, Seed: 5);
+            var solver = new SequentialImpulseSolver(pile.Restitution, pile.Friction) { LayerCorrection = correct };
+            World world = pile.Build(solver);
+            long sweeps = 0;
+            for (int step = 1; step <= 120; step++)
+            {
+                world.Step(Dt);
+                sweeps += step > 20 ? solver.SweepsThisStep : 0;
+            }
+
+            float fastest = 0, deepest = 0;
+            foreach (RigidBody body in world.Bodies)
+            {
+                fastest = MathF.Max(fastest, body.LinearVelocity.Length());
+            }
+
+            foreach (Contact contact in world.Collisions.Contacts)
+            {
+                deepest = MathF.Max(deepest, contact.Penetration);
+            }
+
+            return (sweeps, fastest, deepest);
+        }
+
+        var with = Run(correct: true);
+        var without = Run(correct: false);
+        _output.WriteLine($"steps 21–120: {with.sweeps} sweeps with the correction, {without.sweeps} without; fastest disc at 2 s {with.fastest:E1} against {without.fastest:E1} m/s; deepest overlap {with.deepest * 1e3:F2} against {without.deepest * 1e3:F2} mm");
+        Assert.True(with.sweeps * 4 < without.sweeps, $"{with.sweeps} sweeps with the correction, {without.sweeps} without");
+        Assert.True(with.fastest < 2e-5f && with.fastest * 10 < without.fastest, $"fastest disc {with.fastest:E2} m/s with the correction, {without.fastest:E2} without");
+        Assert.True(with.deepest <= without.deepest, $"deepest overlap {with.deepest} m with the correction, {without.deepest} without");
+    }
+
+    /// <summary>
+    /// A deep pile of mixed masses, solved to a tight tolerance so that its substeps need corrections, cut into strips (64 contacts a strip, so that it is cut) on one and on
+    /// two threads: the corrections run between the threads' sweeps, and every body, every step, every bit is alike;
+    /// once warm, stepping either allocates nothing on any thread.
+    /// </summary>
+    [Fact]
+    public void A_deep_pile_in_strips_is_corrected_bit_for_bit_alike_on_two_threads_and_allocates_nothing_once_warm()
+    {
+        var pile = new DeepPile(Planar: true, Wide: 8, Deep: 48, RadiusSpread: 1f, MassSpread: 3f, Friction: 0.3f, Restitution: 0.2f, Substeps: 1, ExtraIterations: 2, Tolerance: 1e-5f, Seed: 5);
+        World[] worlds = { InStrips(pile, threads: 1), InStrips(pile, threads: 2) };
+        var solver = (SequentialImpulseSolver)worlds[0].Responder;
+        int corrections = 0, measuredCorrections = 0, cutSteps = 0;
+        long allocated = 0, workersBefore = 0;
+        try
+        {
+            for (int step = 1; step <= 420; step++)
+            {
+                bool measured = step > 30 && step <= 90; // warm: every array has grown in the first 30 steps
+                if (step == 31)
+                {
+                    workersBefore = worlds[1].Workers!.WorkerAllocatedBytes;
+                }
+
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                foreach (World world in worlds)
+                {
+                    world.Step(Dt);
+                }
+
+                allocated += measured ? GC.GetAllocatedBytesForCurrentThread() - before : 0;
+                corrections += solver.LayerCorrectionsThisStep;
+                measuredCorrections += measured ? solver.LayerCorrectionsThisStep : 0;
+                cutSteps += solver.Cut.Count > 1 ? 1 : 0;
+                Assert.True(WorldMeasure.FirstDifference(worlds[0], worlds[1]) is null, $"step {step}: {WorldMeasure.FirstDifference(worlds[0], worlds[1])}");
+                if (step == 90)
+                {
+                    long workers = worlds[1].Workers!.WorkerAllocatedBytes - workersBefore;
+                    Assert.True(allocated == 0 && workers == 0, $"{allocated} B allocated in steps 31–90 on the stepping thread, {workers} B on the worker");
+                }
+            }
+
+            _output.WriteLine($"{corrections} corrections in 420 steps ({measuredCorrections} in steps 31–90, whose allocations were measured), {cutSteps} steps cut");
+            Assert.True(cutSteps > 400, $"only {cutSteps} steps were cut into strips");
+            Assert.True(corrections > 100, $"only {corrections} layer corrections: the pile did not need them");
+            Assert.True(measuredCorrections > 0, "no layer correction in the steps whose allocations were measured");
+        }
+        finally
+        {
+            foreach (World world in worlds)
+            {
+                world.ThreadCount = 1;
+            }
+        }
+    }
+
+    private static World InStrips(DeepPile pile, int threads)
+    {
+        var solver = new SequentialImpulseSolver(pile.Restitution, pile.Friction) { Strips = 8 };
+        solver.Cut.ContactsPerStrip = 64;
+        World world = pile.Build(solver);
+        world.ThreadCount = threads;
+        return world;
+    }
+}
