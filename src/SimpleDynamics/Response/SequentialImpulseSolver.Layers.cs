@@ -295,7 +295,9 @@ public sealed partial class SequentialImpulseSolver
         for (int b = 0; b < bands; b++)
         {
             double d = _bandFactor[b];
-            double hd = _bandDiagonal[b] * d + (b > 0 ? _bandUpper[b - 1] * _bandFactor[b - 1] : 0) + (b + 1 < bands ? _bandUpper[b] * _bandFactor[b + 1] : 0);
+            double hd = _bandDiagonal[b] * d
+                + (b > 0 ? _bandUpper[b - 1] * _bandFactor[b - 1] : 0)
+                + (b + 1 < bands ? _bandUpper[b] * _bandFactor[b + 1] : 0);
             gain += d * _bandResidual[b];
             curvature += d * hd;
         }

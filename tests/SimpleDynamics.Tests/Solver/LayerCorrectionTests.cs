@@ -33,7 +33,9 @@ public class LayerCorrectionTests
     /// either way. Its support must reach the floor through every layer from impulses that start at zero: the deep
     /// pile's problem, at once.
     /// </summary>
-    public sealed record DeepPile(bool Planar, int Wide, int Deep, float RadiusSpread, float MassSpread, float Friction, float Restitution, int Substeps, int ExtraIterations, float Tolerance, int Seed)
+    public sealed record DeepPile(
+        bool Planar, int Wide, int Deep, float RadiusSpread, float MassSpread,
+        float Friction, float Restitution, int Substeps, int ExtraIterations, float Tolerance, int Seed)
     {
         private const float Radius = 0.1f;
 
@@ -69,7 +71,8 @@ public class LayerCorrectionTests
         }
 
         public override string ToString() => string.Create(CultureInfo.InvariantCulture,
-            $"{(Planar ? "2-D" : "3-D")} {Wide} wide, {Deep} deep, radii ×{RadiusSpread:R}, masses ×{MassSpread:R}, mu={Friction:R} eps={Restitution:R} substeps={Substeps} extra iterations={ExtraIterations} tolerance={Tolerance:R} seed={Seed}");
+            $"{(Planar ? "2-D" : "3-D")} {Wide} wide, {Deep} deep, radii ×{RadiusSpread:R}, masses ×{MassSpread:R}, " +
+            $"mu={Friction:R} eps={Restitution:R} substeps={Substeps} extra iterations={ExtraIterations} tolerance={Tolerance:R} seed={Seed}");
     }
 
     private static Gen<DeepPile> Piles { get; } =
@@ -135,7 +138,8 @@ public class LayerCorrectionTests
     {
         (long sweeps, float fastest, float deepest) Run(bool correct)
         {
-            var pile = new DeepPile(Planar: true, Wide: 20, Deep: 100, RadiusSpread: 1f, MassSpread: 1f, Friction: 0.3f, Restitution: 0f, Substeps: 4, ExtraIterations: 8, Tolerance: 1e-3f, Seed: 5);
+            var pile = new DeepPile(Planar: true, Wide: 20, Deep: 100, RadiusSpread: 1f, MassSpread: 1f,
+                Friction: 0.3f, Restitution: 0f, Substeps: 4, ExtraIterations: 8, Tolerance: 1e-3f, Seed: 5);
             var solver = new SequentialImpulseSolver(pile.Restitution, pile.Friction) { LayerCorrection = correct };
             World world = pile.Build(solver);
             long sweeps = 0;
@@ -161,21 +165,25 @@ public class LayerCorrectionTests
 
         var with = Run(correct: true);
         var without = Run(correct: false);
-        _output.WriteLine($"steps 21–120: {with.sweeps} sweeps with the correction, {without.sweeps} without; fastest disc at 2 s {with.fastest:E1} against {without.fastest:E1} m/s; deepest overlap {with.deepest * 1e3:F2} against {without.deepest * 1e3:F2} mm");
+        _output.WriteLine($"steps 21–120: {with.sweeps} sweeps with the correction, {without.sweeps} without; " +
+            $"fastest disc at 2 s {with.fastest:E1} against {without.fastest:E1} m/s; " +
+            $"deepest overlap {with.deepest * 1e3:F2} against {without.deepest * 1e3:F2} mm");
         Assert.True(with.sweeps * 4 < without.sweeps, $"{with.sweeps} sweeps with the correction, {without.sweeps} without");
         Assert.True(with.fastest < 2e-5f && with.fastest * 10 < without.fastest, $"fastest disc {with.fastest:E2} m/s with the correction, {without.fastest:E2} without");
         Assert.True(with.deepest <= without.deepest, $"deepest overlap {with.deepest} m with the correction, {without.deepest} without");
     }
 
     /// <summary>
-    /// A deep pile of mixed masses, solved to a tight tolerance so that its substeps need corrections, cut into strips (64 contacts a strip, so that it is cut) on one and on
-    /// two threads: the corrections run between the threads' sweeps, and every body, every step, every bit is alike;
-    /// once warm, stepping either allocates nothing on any thread.
+    /// A deep pile of mixed masses, solved to a tight tolerance so that its substeps need corrections, cut into strips
+    /// (64 contacts a strip, so that it is cut) on one and on two threads: the corrections run between the threads'
+    /// sweeps, and every body, every step, every bit is alike; once warm, stepping either allocates nothing on any
+    /// thread.
     /// </summary>
     [Fact]
     public void A_deep_pile_in_strips_is_corrected_bit_for_bit_alike_on_two_threads_and_allocates_nothing_once_warm()
     {
-        var pile = new DeepPile(Planar: true, Wide: 8, Deep: 48, RadiusSpread: 1f, MassSpread: 3f, Friction: 0.3f, Restitution: 0.2f, Substeps: 1, ExtraIterations: 2, Tolerance: 1e-5f, Seed: 5);
+        var pile = new DeepPile(Planar: true, Wide: 8, Deep: 48, RadiusSpread: 1f, MassSpread: 3f,
+            Friction: 0.3f, Restitution: 0.2f, Substeps: 1, ExtraIterations: 2, Tolerance: 1e-5f, Seed: 5);
         World[] worlds = { InStrips(pile, threads: 1), InStrips(pile, threads: 2) };
         var solver = (SequentialImpulseSolver)worlds[0].Responder;
         int corrections = 0, measuredCorrections = 0, cutSteps = 0;
