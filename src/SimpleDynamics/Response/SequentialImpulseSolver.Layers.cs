@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using SimpleDynamics.Mathematics;
 
 namespace SimpleDynamics.Response;
@@ -21,7 +22,8 @@ namespace SimpleDynamics.Response;
 /// <para><b>The coarse problem.</b> With the friction impulses held, the kinetic energy after the contact impulses λ
 /// is E(λ) = E₀ + λ·(J v₀) + ½ λᵀ A λ, A = J M⁻¹ Jᵀ (J: each contact's normal, eq. 13–16; r × n = 0 for spheres,
 /// so normal impulses turn nothing); a sweep's normal step minimises it one contact at a time (eq. 16, target
-/// v_n = 0). Band b scales its impulses by 1 + α_b: λ' = λ + P α, where column b of P holds λ_i for the contacts of
+/// v_n = 0). (With a kinematic body moving, J v₀ holds its velocity too, and E is the energy less the work its pushes
+/// do: the quantity the sweeps lower, which the correction lowers as well.) Band b scales its impulses by 1 + α_b: λ' = λ + P α, where column b of P holds λ_i for the contacts of
 /// band b. The α that minimises E(λ + P α) solves the Galerkin system (Pᵀ A P) α = −Pᵀ v_n, v_n the contacts' normal
 /// velocities now; a band's contacts touch only its own and the neighbouring bands' (a band is taller than any body),
 /// so Pᵀ A P is tridiagonal, and it is built exactly as Σ over bodies of (1/m) G_sᵀ G_s, G_s holding per band the sum
@@ -48,6 +50,7 @@ public sealed partial class SequentialImpulseSolver
     private const int MostBands = 4096;
 
     private int[] _bandOf = new int[InitialCapacity]; // per active contact (position in _active): its band
+    private double[] _bandResidualSums = new double[2 * InitialCapacity]; // per slot, per band parity: Σ −λ_i v_n,i of the contacts kept there
     private Vector3[] _bandSums = new Vector3[2 * InitialCapacity]; // per slot, per band parity: Σ ±λ_i n_i of its contacts
     private int[] _bandOfSum = new int[2 * InitialCapacity]; // per slot, per band parity: the band summed there (−1: none)
     private double[] _bandDiagonal = new double[InitialCapacity], _bandUpper = new double[InitialCapacity];
@@ -92,7 +95,7 @@ public sealed partial class SequentialImpulseSolver
             _bandsAssigned = true;
         }
 
-        if (_bandCount < 2 || !GatherBandSums(_bandCount))
+        if (_bandCount < 2 || !GatherBandSums())
         {
             return;
         }
@@ -158,39 +161,46 @@ public sealed partial class SequentialImpulseSolver
 
     /// <summary>
     /// Sums, per body and band, ±λ_i n_i over the body's pressed contacts (+ for A, − for B: the direction the impulse
-    /// pushes it), and per band the right-hand side −Pᵀ v_n = −Σ λ_i v_n,i, in double precision and in storage order
-    /// (so alike on any number of threads). Returns false if some movable body's contacts lie in two bands of the
-    /// same parity, or in two that are not neighbours.
+    /// pushes it), and each contact's share of the right-hand side, −λ_i v_n,i, under its body A (or B, if A does not
+    /// move). Runs in strips on the step's threads: a strip's contacts move only its own bodies, and the seam contacts
+    /// come after, so every sum is taken in storage order on any number of threads. Returns false if some movable
+    /// body's contacts lie in two bands of the same parity, or in two that are not neighbours.
     /// </summary>
-    private bool GatherBandSums(int bands)
+    private bool GatherBandSums()
     {
         int slots = _step!.Bodies.Length + 1;
         Buffers.EnsureCapacity(ref _bandSums, 2 * slots);
         Buffers.EnsureCapacity(ref _bandOfSum, 2 * slots);
-        Buffers.EnsureCapacity(ref _bandResidual, bands);
+        Buffers.EnsureCapacity(ref _bandResidualSums, 2 * slots);
         _bandSums.AsSpan(0, 2 * slots).Clear();
         _bandOfSum.AsSpan(0, 2 * slots).Fill(-1);
-        _bandResidual.AsSpan(0, bands).Clear();
-        for (int i = 0; i < _activeCount; i++)
+        _bandResidualSums.AsSpan(0, 2 * slots).Clear();
+        RunPass(StripPass.GatherBands);
+        return LargestOfPass(0) == 0;
+    }
+
+    /// <summary>The gathering of <see cref="GatherBandSums"/> over <see cref="_active"/>[<paramref name="start"/>..<paramref name="end"/>).</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // keeps RunRange, whose sweeps are the hot loop, as small as before
+    private bool GatherBandRange(int start, int end)
+    {
+        bool formed = true;
+        for (int i = start; i < end; i++)
         {
             ref ContactConstraint c = ref _constraints[_active[i]];
-            if (c.NormalImpulse <= 0)
+            if (c.NormalImpulse <= 0 || !formed)
             {
                 continue;
             }
 
             int band = _bandOf[i];
             Vector3 push = c.NormalImpulse * c.Normal;
-            if (!AddToBandSum(c.A, band, push) || !AddToBandSum(c.B, band, -push))
-            {
-                return false;
-            }
-
+            formed = AddToBandSum(c.A, band, push) && AddToBandSum(c.B, band, -push);
             float normalVelocity = Vector3.Dot(_bodies[c.A].Linear - _bodies[c.B].Linear, c.Normal); // r × n = 0
-            _bandResidual[band] -= c.NormalImpulse * (double)normalVelocity;
+            int keeper = _bodies[c.A].InverseMass > 0 ? c.A : c.B; // a body whose sums hold this band (if either moves)
+            _bandResidualSums[2 * keeper + (band & 1)] -= c.NormalImpulse * (double)normalVelocity;
         }
 
-        return true;
+        return formed;
     }
 
     private bool AddToBandSum(int slot, int band, Vector3 push)
@@ -218,14 +228,16 @@ public sealed partial class SequentialImpulseSolver
 
     /// <summary>
     /// The tridiagonal Pᵀ A P = Σ_s (1/m_s) G_sᵀ G_s (diagonal and upper neighbour; it is symmetric), in double
-    /// precision and in slot order.
+    /// precision and in slot order, and the right-hand side −Pᵀ v_n = −Σ λ_i v_n,i from the bodies' shares of it.
     /// </summary>
     private void BuildBandSystem(int bands)
     {
         Buffers.EnsureCapacity(ref _bandDiagonal, bands);
         Buffers.EnsureCapacity(ref _bandUpper, bands);
+        Buffers.EnsureCapacity(ref _bandResidual, bands);
         _bandDiagonal.AsSpan(0, bands).Clear();
         _bandUpper.AsSpan(0, bands).Clear();
+        _bandResidual.AsSpan(0, bands).Clear();
         int slots = _step!.Bodies.Length + 1;
         for (int s = 1; s < slots; s++)
         {
@@ -240,11 +252,13 @@ public sealed partial class SequentialImpulseSolver
             if (even >= 0)
             {
                 _bandDiagonal[even] += inverseMass * (double)sumEven.LengthSquared();
+                _bandResidual[even] += _bandResidualSums[2 * s];
             }
 
             if (odd >= 0)
             {
                 _bandDiagonal[odd] += inverseMass * (double)sumOdd.LengthSquared();
+                _bandResidual[odd] += _bandResidualSums[2 * s + 1];
             }
 
             if (even >= 0 && odd >= 0)
@@ -316,10 +330,17 @@ public sealed partial class SequentialImpulseSolver
         return true;
     }
 
-    /// <summary>Scales each pressed contact's normal impulse by 1 + α of its band, and its bodies' velocities with it (eq. 6).</summary>
-    private void ScaleBandImpulses()
+    /// <summary>
+    /// Scales each pressed contact's normal impulse by 1 + α of its band, and its bodies' velocities with it (eq. 6);
+    /// in strips on the step's threads, like the sweeps.
+    /// </summary>
+    private void ScaleBandImpulses() => RunPass(StripPass.ScaleBands);
+
+    /// <summary>The scaling of <see cref="ScaleBandImpulses"/> over <see cref="_active"/>[<paramref name="start"/>..<paramref name="end"/>).</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // as GatherBandRange
+    private void ScaleBandRange(int start, int end)
     {
-        for (int i = 0; i < _activeCount; i++)
+        for (int i = start; i < end; i++)
         {
             ref ContactConstraint c = ref _constraints[_active[i]];
             float change = (float)(_bandFactor[_bandOf[i]] * c.NormalImpulse);

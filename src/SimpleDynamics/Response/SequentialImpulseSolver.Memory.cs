@@ -74,6 +74,7 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _bodyScratch, capacity, 0);
         Buffers.ShrinkTo(ref _bandSums, 2 * capacity, 0);
         Buffers.ShrinkTo(ref _bandOfSum, 2 * capacity, 0);
+        Buffers.ShrinkTo(ref _bandResidualSums, 2 * capacity, 0);
     }
 
     /// <summary>The layer correction's arrays per band (SequentialImpulseSolver.Layers.cs): at most 4,096 bands, so only on request.</summary>

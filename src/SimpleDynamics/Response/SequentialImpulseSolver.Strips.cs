@@ -7,7 +7,8 @@ namespace SimpleDynamics.Response;
 /// The velocity passes on several threads (<see cref="World.ThreadCount"/>): the strips of a large pile
 /// (<see cref="Strips"/>) at once, then the seam contacts between them, with exactly the result of one thread
 /// (see <see cref="SweepStrips"/>). Those are the passes over every contact and the local sweeps over the contacts
-/// still changing (SequentialImpulseSolver.LocalSweeps.cs), which a deep pile that stirs spends most of its sweeps in.
+/// still changing (SequentialImpulseSolver.LocalSweeps.cs), which a deep pile that stirs spends most of its sweeps in,
+/// and the layer correction's passes over the contacts (SequentialImpulseSolver.Layers.cs) between them.
 /// </summary>
 public sealed partial class SequentialImpulseSolver
 {
@@ -39,6 +40,8 @@ public sealed partial class SequentialImpulseSolver
         MeasuredSweep,
         Shock,
         LocalSweep,
+        GatherBands,
+        ScaleBands,
     }
 
     /// <summary>
@@ -180,6 +183,14 @@ public sealed partial class SequentialImpulseSolver
 
             case StripPass.LocalSweep:
                 SweepMarkedRange(slot, start, end);
+                break;
+
+            case StripPass.GatherBands:
+                _stripResults[slot * Padding] = GatherBandRange(start, end) ? 0f : 1f;
+                break;
+
+            case StripPass.ScaleBands:
+                ScaleBandRange(start, end);
                 break;
         }
     }
