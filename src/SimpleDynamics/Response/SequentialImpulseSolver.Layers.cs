@@ -23,11 +23,12 @@ namespace SimpleDynamics.Response;
 /// is E(λ) = E₀ + λ·(J v₀) + ½ λᵀ A λ, A = J M⁻¹ Jᵀ (J: each contact's normal, eq. 13–16; r × n = 0 for spheres,
 /// so normal impulses turn nothing); a sweep's normal step minimises it one contact at a time (eq. 16, target
 /// v_n = 0). (With a kinematic body moving, J v₀ holds its velocity too, and E is the energy less the work its pushes
-/// do: the quantity the sweeps lower, which the correction lowers as well.) Band b scales its impulses by 1 + α_b: λ' = λ + P α, where column b of P holds λ_i for the contacts of
-/// band b. The α that minimises E(λ + P α) solves the Galerkin system (Pᵀ A P) α = −Pᵀ v_n, v_n the contacts' normal
-/// velocities now; a band's contacts touch only its own and the neighbouring bands' (a band is taller than any body),
-/// so Pᵀ A P is tridiagonal, and it is built exactly as Σ over bodies of (1/m) G_sᵀ G_s, G_s holding per band the sum
-/// of ±λ_i n_i over the body's contacts in it.</para>
+/// do: the quantity the sweeps lower, which the correction lowers as well.) Band b scales its impulses by 1 + α_b:
+/// λ' = λ + P α, where column b of P holds λ_i for the contacts of band b. The α that minimises E(λ + P α) solves the
+/// Galerkin system (Pᵀ A P) α = −Pᵀ v_n, v_n the contacts' normal velocities now; a band's contacts touch only its
+/// own and the neighbouring bands' (a band is taller than any body), so Pᵀ A P is tridiagonal, and it is built
+/// exactly as Σ over bodies of (1/m) G_sᵀ G_s, G_s holding per band the sum of ±λ_i n_i over the body's contacts in
+/// it.</para>
 /// <para><b>Laws.</b> Each factor is limited to ±½, so every impulse is scaled by at least ½ and stays ≥ 0; the step
 /// along the limited factors d is t d with t = min(1, dᵀr / dᵀHd) (H = Pᵀ A P, r = −Pᵀ v_n), the exact minimum of the
 /// convex E on that line, or none when dᵀr ≤ 0: so the correction never adds kinetic energy (to rounding). A contact's
@@ -50,8 +51,8 @@ public sealed partial class SequentialImpulseSolver
     private const int MostBands = 4096;
 
     private int[] _bandOf = new int[InitialCapacity]; // per active contact (position in _active): its band
-    private double[] _bandResidualSums = new double[2 * InitialCapacity]; // per slot, per band parity: Σ −λ_i v_n,i of the contacts kept there
     private Vector3[] _bandSums = new Vector3[2 * InitialCapacity]; // per slot, per band parity: Σ ±λ_i n_i of its contacts
+    private double[] _bandResidualSums = new double[2 * InitialCapacity]; // the same: Σ −λ_i v_n,i of the contacts kept there
     private int[] _bandOfSum = new int[2 * InitialCapacity]; // per slot, per band parity: the band summed there (−1: none)
     private double[] _bandDiagonal = new double[InitialCapacity], _bandUpper = new double[InitialCapacity];
     private double[] _bandResidual = new double[InitialCapacity], _bandFactor = new double[InitialCapacity];
