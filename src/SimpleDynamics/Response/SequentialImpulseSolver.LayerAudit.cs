@@ -16,6 +16,7 @@ public sealed partial class SequentialImpulseSolver
         private double _energyBefore;
         private Vector3D _momentumBefore, _externalImpulse;
         private double _impulseMoved;
+        private double[] _direct = new double[16], _scale = new double[16];
 
         /// <summary>Corrections audited.</summary>
         public int Count { get; private set; }
@@ -32,11 +33,20 @@ public sealed partial class SequentialImpulseSolver
         /// </summary>
         public double LargestMomentumError { get; private set; }
 
+        /// <summary>
+        /// The largest difference between a band's right-hand side −Pᵀ v_n as the solver built it (from its bodies'
+        /// band sums, SequentialImpulseSolver.BuildBandSystem) and −Σ λ_i v_n,i summed contact by contact, as a fraction
+        /// of Σ λ_i (|n_i · v_A| + |n_i · v_B|) over the band's pressed contacts (contacts between two immovable bodies
+        /// are in neither).
+        /// </summary>
+        public double LargestResidualError { get; private set; }
+
         /// <summary>The smallest normal impulse a correction left (a contact never pulls: ≥ 0).</summary>
         public float SmallestImpulse { get; private set; } = float.PositiveInfinity;
 
         internal void Before(SequentialImpulseSolver solver)
         {
+            CheckResidual(solver);
             (_energyBefore, _momentumBefore) = Totals(solver);
             _externalImpulse = default;
             _impulseMoved = 0;
@@ -72,6 +82,43 @@ public sealed partial class SequentialImpulseSolver
             for (int i = 0; i < solver._activeCount; i++)
             {
                 SmallestImpulse = MathF.Min(SmallestImpulse, solver._constraints[solver._active[i]].NormalImpulse);
+            }
+        }
+
+        private void CheckResidual(SequentialImpulseSolver solver)
+        {
+            int bands = solver._bandCount;
+            if (_direct.Length < bands)
+            {
+                _direct = new double[bands];
+                _scale = new double[bands];
+            }
+
+            Array.Clear(_direct, 0, bands);
+            Array.Clear(_scale, 0, bands);
+            for (int i = 0; i < solver._activeCount; i++)
+            {
+                ref ContactConstraint c = ref solver._constraints[solver._active[i]];
+                ref VelocityState a = ref solver._bodies[c.A];
+                ref VelocityState b = ref solver._bodies[c.B];
+                if (c.NormalImpulse <= 0 || (a.InverseMass == 0 && b.InverseMass == 0))
+                {
+                    continue;
+                }
+
+                var normal = new Vector3D(c.Normal);
+                double alongA = Vector3D.Dot(normal, new Vector3D(a.Linear)), alongB = Vector3D.Dot(normal, new Vector3D(b.Linear));
+                int band = solver._bandOf[i];
+                _direct[band] -= c.NormalImpulse * (alongA - alongB); // −λ_i v_n,i (r × n = 0 for spheres)
+                _scale[band] += c.NormalImpulse * (Math.Abs(alongA) + Math.Abs(alongB));
+            }
+
+            for (int band = 0; band < bands; band++)
+            {
+                if (_scale[band] > 0)
+                {
+                    LargestResidualError = Math.Max(LargestResidualError, Math.Abs(solver._bandResidual[band] - _direct[band]) / _scale[band]);
+                }
             }
         }
 

@@ -27,7 +27,10 @@ namespace SimpleDynamics.Response;
 /// Galerkin system (Pᵀ A P) α = −Pᵀ v_n, v_n the contacts' normal velocities now; a band's contacts touch only its
 /// own and the neighbouring bands' (a band is taller than any body), so Pᵀ A P is tridiagonal, and it is built
 /// exactly as Σ over bodies of (1/m) G_sᵀ G_s, G_s holding per band the sum of ±λ_i n_i over the body's contacts in
-/// it.</para>
+/// it; the right-hand side is Σ over bodies of −v_s · G_s (v_n,i = n_i · (v_A − v_B) for spheres; a moving kinematic
+/// body's share is kept with the body it pushes), so one pass over the contacts gathers everything the system needs.
+/// The sweep before the correction is that pass: it leaves each contact's λ_i final for the sweep, and adds it to its
+/// bodies' sums there and then.</para>
 /// <para><b>Laws.</b> Each factor is limited to ±½, so every impulse is scaled by at least ½ and stays ≥ 0; the step
 /// along the limited factors d is t d with t = min(1, dᵀr / dᵀHd) (H = Pᵀ A P, r = −Pᵀ v_n), the exact minimum of the
 /// convex E on that line, or none when dᵀr ≤ 0: so the correction never adds kinetic energy (to rounding). A contact's
@@ -35,7 +38,7 @@ namespace SimpleDynamics.Response;
 /// sweep always follows (friction is clamped to the new cone there). The tests audit all three on generated deep
 /// piles (LayerCorrectionTests).</para>
 /// <para><b>When.</b> Only in a substep that has spent 2 × <see cref="ExtraIterations"/> extra sweeps without
-/// converging, after each further sweep: a correction costs about one sweep, and a pile that is still landing
+/// converging, after each further sweep: a correction costs about as much as a sweep, and a pile that is still landing
 /// converges, or not, by sweeps alone. After every extra sweep instead, 2,400 discs poured 60 deep into a box 40 wide
 /// took 5.7 s to fall asleep instead of 3.3 s, with no fewer sweeps (3.7 s with the rule); on the 16,000-disc pit
 /// loaded from a saved pour, 180 steps took 71 s instead of 63 s without (59 s with the rule; 148 ms a step in the
@@ -51,8 +54,9 @@ public sealed partial class SequentialImpulseSolver
 
     private int[] _bandOf = new int[InitialCapacity]; // per active contact (position in _active): its band
     private Vector3[] _bandSums = new Vector3[2 * InitialCapacity]; // per slot, per band parity: Σ ±λ_i n_i of its contacts
-    private double[] _bandResidualSums = new double[2 * InitialCapacity]; // the same: Σ −λ_i v_n,i of the contacts kept there
-    private int[] _bandOfSum = new int[2 * InitialCapacity]; // per slot, per band parity: the band summed there (−1: none)
+    private double[] _bandResidualSums = new double[2 * InitialCapacity]; // the same: what a moving immovable body adds to −Pᵀ v_n
+    private int[] _bandOfSum = new int[2 * InitialCapacity]; // per slot, per band parity: 1 + the band summed there (0: none)
+    private bool _bandSumsEmpty = true; // the three arrays above hold zeros everywhere (BuildBandSystem empties them as it reads)
     private double[] _bandDiagonal = new double[InitialCapacity], _bandUpper = new double[InitialCapacity];
     private double[] _bandResidual = new double[InitialCapacity], _bandFactor = new double[InitialCapacity];
     private double[] _bandEliminated = new double[InitialCapacity];
@@ -83,11 +87,12 @@ public sealed partial class SequentialImpulseSolver
     private bool CorrectsLayers => LayerCorrection && _extraSweeps > _extraIterations && _gravity != Vector3.Zero;
 
     /// <summary>
-    /// Applies the layer correction once (see the file's remarks): bands, the tridiagonal Galerkin system, its solution
-    /// and the scaled impulses. Leaves everything as it was when the system cannot be formed (too many bands, a body
-    /// whose contacts span more than two bands) or its solution is not finite.
+    /// One measured sweep (<see cref="Sweep"/>) that gathers the band sums as it leaves each contact, then, unless it
+    /// converged, the layer correction (see the file's remarks): the tridiagonal Galerkin system, its solution and the
+    /// scaled impulses. Corrects nothing when the system cannot be formed (fewer than two bands or too many, a body
+    /// whose contacts span more than two bands) or its solution is not finite. Returns whether the sweep converged.
     /// </summary>
-    private void CorrectLayers()
+    private bool SweepAndCorrectLayers()
     {
         if (!_bandsAssigned)
         {
@@ -95,15 +100,24 @@ public sealed partial class SequentialImpulseSolver
             _bandsAssigned = true;
         }
 
-        if (_bandCount < 2 || !GatherBandSums())
+        if (_bandCount < 2)
         {
-            return;
+            return Sweep() <= _convergenceTolerance;
+        }
+
+        PrepareBandSums();
+        bool converged = Sweep(gatherBands: true) <= _convergenceTolerance;
+        bool formed = LargestOfPass(3) == 0;
+        if (converged || !formed)
+        {
+            EmptyBandSums();
+            return converged;
         }
 
         BuildBandSystem(_bandCount);
         if (!SolveBandSystem(_bandCount))
         {
-            return;
+            return false;
         }
 
         if (AuditLayerCorrections)
@@ -117,6 +131,8 @@ public sealed partial class SequentialImpulseSolver
         {
             Audit.After(this);
         }
+
+        return false;
     }
 
     /// <summary>
@@ -160,47 +176,84 @@ public sealed partial class SequentialImpulseSolver
         : 0.5f * Vector3.Dot(_positions[c.A] + _positions[c.B], up);
 
     /// <summary>
-    /// Sums, per body and band, ±λ_i n_i over the body's pressed contacts (+ for A, − for B: the direction the impulse
-    /// pushes it), and each contact's share of the right-hand side, −λ_i v_n,i, under its body A (or B, if A does not
-    /// move). Runs in strips on the step's threads: a strip's contacts move only its own bodies, and the seam contacts
-    /// come after, so every sum is taken in storage order on any number of threads. Returns false if some movable
-    /// body's contacts lie in two bands of the same parity, or in two that are not neighbours.
+    /// Makes room for the band sums of every slot, and empties them if a gathering was left unfinished.
     /// </summary>
-    private bool GatherBandSums()
+    private void PrepareBandSums()
     {
         int slots = _step!.Bodies.Length + 1;
         Buffers.EnsureCapacity(ref _bandSums, 2 * slots);
         Buffers.EnsureCapacity(ref _bandOfSum, 2 * slots);
         Buffers.EnsureCapacity(ref _bandResidualSums, 2 * slots);
-        _bandSums.AsSpan(0, 2 * slots).Clear();
-        _bandOfSum.AsSpan(0, 2 * slots).Fill(-1);
-        _bandResidualSums.AsSpan(0, 2 * slots).Clear();
-        RunPass(StripPass.GatherBands);
-        return LargestOfPass(0) == 0;
+        if (!_bandSumsEmpty)
+        {
+            EmptyBandSums();
+        }
+
+        _bandSumsEmpty = false; // until BuildBandSystem or EmptyBandSums has emptied them again
     }
 
-    /// <summary>The gathering of <see cref="GatherBandSums"/> over <see cref="_active"/>[<paramref name="start"/>..<paramref name="end"/>).</summary>
-    [MethodImpl(MethodImplOptions.NoInlining)] // keeps RunRange, whose sweeps are the hot loop, as small as before
-    private bool GatherBandRange(int start, int end)
+    private void EmptyBandSums()
     {
+        Array.Clear(_bandSums, 0, _bandSums.Length);
+        Array.Clear(_bandOfSum, 0, _bandOfSum.Length);
+        Array.Clear(_bandResidualSums, 0, _bandResidualSums.Length);
+        _bandSumsEmpty = true;
+    }
+
+    /// <summary>
+    /// The measured sweep of <see cref="Sweep"/> over <see cref="_active"/>[<paramref name="start"/>..<paramref name="end"/>),
+    /// which also adds each pressed contact, as the sweep leaves it, to its bodies' band sums (<see cref="GatherBand"/>);
+    /// keeps in result 3 whether some body's contacts spanned too many bands. Runs in strips like every sweep: a strip's
+    /// contacts move only its own bodies, and the seam contacts come after, so every sum is taken in storage order on
+    /// any number of threads.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // keeps RunRange, whose sweeps are the hot loop, as small as before
+    private void SweepGatheringBandRange(int slot, int start, int end)
+    {
+        float largestChange = 0, largestImpulse = 0, largestSpeedChange = 0;
         bool formed = true;
         for (int i = start; i < end; i++)
         {
             ref ContactConstraint c = ref _constraints[_active[i]];
-            if (c.NormalImpulse <= 0 || !formed)
+            largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(ref c, out float change));
+            largestChange = MathF.Max(largestChange, change);
+            largestImpulse = MathF.Max(largestImpulse, c.NormalImpulse);
+            if (c.NormalImpulse > 0 && formed)
             {
-                continue;
+                formed = GatherBand(ref c, _bandOf[i]);
             }
-
-            int band = _bandOf[i];
-            Vector3 push = c.NormalImpulse * c.Normal;
-            formed = AddToBandSum(c.A, band, push) && AddToBandSum(c.B, band, -push);
-            float normalVelocity = Vector3.Dot(_bodies[c.A].Linear - _bodies[c.B].Linear, c.Normal); // r × n = 0
-            int keeper = _bodies[c.A].InverseMass > 0 ? c.A : c.B; // a body whose sums hold this band (if either moves)
-            _bandResidualSums[2 * keeper + (band & 1)] -= c.NormalImpulse * (double)normalVelocity;
         }
 
-        return formed;
+        _stripResults[slot * Padding] = largestSpeedChange;
+        _stripResults[slot * Padding + 1] = largestChange;
+        _stripResults[slot * Padding + 2] = largestImpulse;
+        _stripResults[slot * Padding + 3] = formed ? 0f : 1f;
+    }
+
+    /// <summary>
+    /// Adds a pressed contact of band <paramref name="band"/> to its bodies' band sums: +λ n to A's, −λ n to B's (the
+    /// directions it pushes them). Where one body cannot move, the other also keeps the term of −λ v_n that the
+    /// immovable body's velocity gives (zero for the ground and walls; a kinematic body may move). Returns false if a
+    /// movable body's contacts lie in two bands of the same parity, or in two that are not neighbours.
+    /// </summary>
+    private bool GatherBand(ref ContactConstraint c, int band)
+    {
+        Vector3 push = c.NormalImpulse * c.Normal;
+        if (!AddToBandSum(c.A, band, push) || !AddToBandSum(c.B, band, -push))
+        {
+            return false;
+        }
+
+        bool movesA = _bodies[c.A].InverseMass > 0, movesB = _bodies[c.B].InverseMass > 0;
+        if (movesA != movesB)
+        {
+            // −λ v_n = −λ n · v_A + λ n · v_B: the movable body's own term comes from its sums (BuildBandSystem).
+            int mover = movesA ? c.A : c.B;
+            double other = c.NormalImpulse * (double)Vector3.Dot(c.Normal, _bodies[movesA ? c.B : c.A].Linear);
+            _bandResidualSums[2 * mover + (band & 1)] += movesA ? other : -other;
+        }
+
+        return true;
     }
 
     private bool AddToBandSum(int slot, int band, Vector3 push)
@@ -210,16 +263,16 @@ public sealed partial class SequentialImpulseSolver
             return true; // the ground, or a body that no impulse moves, spans any number of bands and enters no sum
         }
 
-        int place = 2 * slot + (band & 1);
-        if (_bandOfSum[place] != band)
+        int place = 2 * slot + (band & 1), tag = band + 1;
+        if (_bandOfSum[place] != tag)
         {
             int other = _bandOfSum[place ^ 1];
-            if (_bandOfSum[place] >= 0 || (other >= 0 && Math.Abs(other - band) != 1))
+            if (_bandOfSum[place] != 0 || (other != 0 && Math.Abs(other - tag) != 1))
             {
                 return false; // the body's contacts span more than two neighbouring bands
             }
 
-            _bandOfSum[place] = band;
+            _bandOfSum[place] = tag;
         }
 
         _bandSums[place] += push;
@@ -227,8 +280,9 @@ public sealed partial class SequentialImpulseSolver
     }
 
     /// <summary>
-    /// The tridiagonal Pᵀ A P = Σ_s (1/m_s) G_sᵀ G_s (diagonal and upper neighbour; it is symmetric), in double
-    /// precision and in slot order, and the right-hand side −Pᵀ v_n = −Σ λ_i v_n,i from the bodies' shares of it.
+    /// The tridiagonal Pᵀ A P = Σ_s (1/m_s) G_sᵀ G_s (diagonal and upper neighbour; it is symmetric) and the
+    /// right-hand side −Pᵀ v_n = −Σ_s v_s · G_s (plus what moving immovable bodies add), in double precision and in
+    /// slot order; empties the band sums as it reads them, for the next gathering sweep.
     /// </summary>
     private void BuildBandSystem(int bands)
     {
@@ -241,32 +295,41 @@ public sealed partial class SequentialImpulseSolver
         int slots = _step!.Bodies.Length + 1;
         for (int s = 1; s < slots; s++)
         {
-            float inverseMass = _bodies[s].InverseMass;
-            int even = _bandOfSum[2 * s], odd = _bandOfSum[2 * s + 1];
-            if (inverseMass == 0 || (even < 0 && odd < 0))
+            int even = _bandOfSum[2 * s] - 1, odd = _bandOfSum[2 * s + 1] - 1;
+            if (even < 0 && odd < 0)
             {
-                continue;
+                continue; // no pressed contact, or a body no impulse moves: nothing was summed here
             }
 
+            double inverseMass = _bodies[s].InverseMass;
+            Vector3 velocity = _bodies[s].Linear;
             Vector3 sumEven = _bandSums[2 * s], sumOdd = _bandSums[2 * s + 1];
             if (even >= 0)
             {
-                _bandDiagonal[even] += inverseMass * (double)sumEven.LengthSquared();
-                _bandResidual[even] += _bandResidualSums[2 * s];
+                _bandDiagonal[even] += inverseMass * sumEven.LengthSquared();
+                _bandResidual[even] += _bandResidualSums[2 * s] - Dot(velocity, sumEven);
             }
 
             if (odd >= 0)
             {
-                _bandDiagonal[odd] += inverseMass * (double)sumOdd.LengthSquared();
-                _bandResidual[odd] += _bandResidualSums[2 * s + 1];
+                _bandDiagonal[odd] += inverseMass * sumOdd.LengthSquared();
+                _bandResidual[odd] += _bandResidualSums[2 * s + 1] - Dot(velocity, sumOdd);
             }
 
             if (even >= 0 && odd >= 0)
             {
-                _bandUpper[Math.Min(even, odd)] += inverseMass * (double)Vector3.Dot(sumEven, sumOdd);
+                _bandUpper[Math.Min(even, odd)] += inverseMass * Vector3.Dot(sumEven, sumOdd);
             }
+
+            _bandSums[2 * s] = _bandSums[2 * s + 1] = default;
+            _bandOfSum[2 * s] = _bandOfSum[2 * s + 1] = 0;
+            _bandResidualSums[2 * s] = _bandResidualSums[2 * s + 1] = 0;
         }
+
+        _bandSumsEmpty = true;
     }
+
+    private static double Dot(Vector3 a, Vector3 b) => (double)a.X * b.X + (double)a.Y * b.Y + (double)a.Z * b.Z;
 
     /// <summary>
     /// Solves the tridiagonal system for the band factors (Thomas' algorithm; a band without pressed contacts keeps
@@ -337,7 +400,7 @@ public sealed partial class SequentialImpulseSolver
     private void ScaleBandImpulses() => RunPass(StripPass.ScaleBands);
 
     /// <summary>The scaling of <see cref="ScaleBandImpulses"/> over <see cref="_active"/>[<paramref name="start"/>..<paramref name="end"/>).</summary>
-    [MethodImpl(MethodImplOptions.NoInlining)] // as GatherBandRange
+    [MethodImpl(MethodImplOptions.NoInlining)] // as SweepGatheringBandRange
     private void ScaleBandRange(int start, int end)
     {
         for (int i = start; i < end; i++)

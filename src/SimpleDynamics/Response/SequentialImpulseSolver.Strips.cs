@@ -40,7 +40,7 @@ public sealed partial class SequentialImpulseSolver
         MeasuredSweep,
         Shock,
         LocalSweep,
-        GatherBands,
+        SweepGatheringBands,
         ScaleBands,
     }
 
@@ -185,8 +185,8 @@ public sealed partial class SequentialImpulseSolver
                 SweepMarkedRange(slot, start, end);
                 break;
 
-            case StripPass.GatherBands:
-                _stripResults[slot * Padding] = GatherBandRange(start, end) ? 0f : 1f;
+            case StripPass.SweepGatheringBands:
+                SweepGatheringBandRange(slot, start, end);
                 break;
 
             case StripPass.ScaleBands:

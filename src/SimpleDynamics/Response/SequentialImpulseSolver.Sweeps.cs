@@ -88,11 +88,9 @@ public sealed partial class SequentialImpulseSolver
 
         for (; extra < _extraSweeps && !converged; extra++)
         {
-            converged = Sweep() <= _convergenceTolerance;
-            if (!converged && extra >= 2 * _extraIterations && extra + 1 < _extraSweeps && CorrectsLayers)
-            {
-                CorrectLayers(); // a deep pile's smooth error, which sweeps carry only a few layers (see LayerCorrection)
-            }
+            converged = extra >= 2 * _extraIterations && extra + 1 < _extraSweeps && CorrectsLayers
+                ? SweepAndCorrectLayers() // a deep pile's smooth error, which sweeps carry only a few layers (see LayerCorrection)
+                : Sweep() <= _convergenceTolerance;
         }
     }
 
@@ -114,10 +112,11 @@ public sealed partial class SequentialImpulseSolver
     /// the bottom's) counted as converged while it still sank: a 4,000-disc pit kept creeping at 1–2 cm/s with a
     /// hundred impacts per step; with this measure it is at rest (every ball under 1 mm/s) 9 s after its pour began.
     /// </remarks>
-    private float Sweep()
+    /// <param name="gatherBands">Whether the sweep also gathers the layer correction's sums as it leaves each contact (see <see cref="SweepAndCorrectLayers"/>).</param>
+    private float Sweep(bool gatherBands = false)
     {
         SweepsThisStep++;
-        RunPass(StripPass.MeasuredSweep);
+        RunPass(gatherBands ? StripPass.SweepGatheringBands : StripPass.MeasuredSweep);
         float largestSpeedChange = LargestOfPass(0), largestChange = LargestOfPass(1), largestImpulse = LargestOfPass(2);
         if (_gravity != Vector3.Zero)
         {
