@@ -60,6 +60,7 @@ public sealed partial class SequentialImpulseSolver
     private double[] _bandDiagonal = new double[InitialCapacity], _bandUpper = new double[InitialCapacity];
     private double[] _bandResidual = new double[InitialCapacity], _bandFactor = new double[InitialCapacity];
     private double[] _bandEliminated = new double[InitialCapacity];
+    private double[] _bandShares = new double[3 * InitialCapacity]; // per share of BuildBandSystem: its diagonal, upper and right-hand side
     private float _meanDiameter; // of the bodies of the pile's contacts, this step (PileMeasure)
     private bool _bandsAssigned; // in this substep (MeasureConstraints clears it)
     private int _bandCount;
@@ -281,19 +282,63 @@ public sealed partial class SequentialImpulseSolver
 
     /// <summary>
     /// The tridiagonal Pᵀ A P = Σ_s (1/m_s) G_sᵀ G_s (diagonal and upper neighbour; it is symmetric) and the
-    /// right-hand side −Pᵀ v_n = −Σ_s v_s · G_s (plus what moving immovable bodies add), in double precision and in
-    /// slot order; empties the band sums as it reads them, for the next gathering sweep.
+    /// right-hand side −Pᵀ v_n = −Σ_s v_s · G_s (plus what moving immovable bodies add), in double precision: each
+    /// strip's bodies give their share of it (on the step's threads, each where its strip's sweeps ran), then the
+    /// bodies woken during the step theirs, and the shares are added in that order, so that the sums are the same on
+    /// any number of threads. Empties the band sums as it reads them, for the next gathering sweep.
     /// </summary>
     private void BuildBandSystem(int bands)
     {
+        int shares = _strips.Count + 1;
+        Buffers.EnsureCapacity(ref _bandShares, 3 * bands * shares);
+        if (_substepInStrips)
+        {
+            RunInStrips(StripPass.BuildBands);
+        }
+        else
+        {
+            for (int share = 0; share < shares; share++)
+            {
+                BuildBandShare(share);
+            }
+        }
+
         Buffers.EnsureCapacity(ref _bandDiagonal, bands);
         Buffers.EnsureCapacity(ref _bandUpper, bands);
         Buffers.EnsureCapacity(ref _bandResidual, bands);
-        _bandDiagonal.AsSpan(0, bands).Clear();
-        _bandUpper.AsSpan(0, bands).Clear();
-        _bandResidual.AsSpan(0, bands).Clear();
-        int slots = _step!.Bodies.Length + 1;
-        for (int s = 1; s < slots; s++)
+        for (int b = 0; b < bands; b++)
+        {
+            double diagonal = 0, upper = 0, residual = 0;
+            for (int share = 0; share < shares; share++)
+            {
+                int at = 3 * bands * share + b;
+                diagonal += _bandShares[at];
+                upper += _bandShares[at + bands];
+                residual += _bandShares[at + 2 * bands];
+            }
+
+            (_bandDiagonal[b], _bandUpper[b], _bandResidual[b]) = (diagonal, upper, residual);
+        }
+
+        _bandSumsEmpty = true;
+    }
+
+    /// <summary>
+    /// Share <paramref name="share"/> of the band system (see <see cref="BuildBandSystem"/>): that of strip
+    /// <paramref name="share"/>'s bodies, or, for the last share, of the bodies woken during the step; in slot order.
+    /// </summary>
+    private void BuildBandShare(int share)
+    {
+        int bands = _bandCount, strips = _strips.Count;
+        int first = share < strips ? _bodyStart[share + 1] + 1 : _bodyStart[strips + 1] + 1; // slots follow the body order
+        int end = share < strips ? _bodyStart[share + 2] + 1 : _step!.Bodies.Length + 1;
+        Span<double> diagonal = _bandShares.AsSpan(3 * bands * share, bands);
+        Span<double> upper = _bandShares.AsSpan(3 * bands * share + bands, bands);
+        Span<double> residual = _bandShares.AsSpan(3 * bands * share + 2 * bands, bands);
+        diagonal.Clear();
+        upper.Clear();
+        residual.Clear();
+        for (int s = first; s < end; s++)
         {
             int even = _bandOfSum[2 * s] - 1, odd = _bandOfSum[2 * s + 1] - 1;
             if (even < 0 && odd < 0)
@@ -306,27 +351,25 @@ public sealed partial class SequentialImpulseSolver
             Vector3 sumEven = _bandSums[2 * s], sumOdd = _bandSums[2 * s + 1];
             if (even >= 0)
             {
-                _bandDiagonal[even] += inverseMass * sumEven.LengthSquared();
-                _bandResidual[even] += _bandResidualSums[2 * s] - Dot(velocity, sumEven);
+                diagonal[even] += inverseMass * sumEven.LengthSquared();
+                residual[even] += _bandResidualSums[2 * s] - Dot(velocity, sumEven);
             }
 
             if (odd >= 0)
             {
-                _bandDiagonal[odd] += inverseMass * sumOdd.LengthSquared();
-                _bandResidual[odd] += _bandResidualSums[2 * s + 1] - Dot(velocity, sumOdd);
+                diagonal[odd] += inverseMass * sumOdd.LengthSquared();
+                residual[odd] += _bandResidualSums[2 * s + 1] - Dot(velocity, sumOdd);
             }
 
             if (even >= 0 && odd >= 0)
             {
-                _bandUpper[Math.Min(even, odd)] += inverseMass * Vector3.Dot(sumEven, sumOdd);
+                upper[Math.Min(even, odd)] += inverseMass * Vector3.Dot(sumEven, sumOdd);
             }
 
             _bandSums[2 * s] = _bandSums[2 * s + 1] = default;
             _bandOfSum[2 * s] = _bandOfSum[2 * s + 1] = 0;
             _bandResidualSums[2 * s] = _bandResidualSums[2 * s + 1] = 0;
         }
-
-        _bandSumsEmpty = true;
     }
 
     private static double Dot(Vector3 a, Vector3 b) => (double)a.X * b.X + (double)a.Y * b.Y + (double)a.Z * b.Z;

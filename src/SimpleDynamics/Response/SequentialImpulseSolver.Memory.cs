@@ -85,6 +85,7 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _bandResidual, capacity, 0);
         Buffers.ShrinkTo(ref _bandFactor, capacity, 0);
         Buffers.ShrinkTo(ref _bandEliminated, capacity, 0);
+        Buffers.ShrinkTo(ref _bandShares, 3 * capacity, 0);
     }
 
     private void ShrinkContacts(int capacity)

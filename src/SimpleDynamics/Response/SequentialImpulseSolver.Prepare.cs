@@ -62,8 +62,12 @@ public sealed partial class SequentialImpulseSolver
         {
             // Each strip's bodies together (SweepStrips.cs), so that threads sweeping strips write apart in memory.
             Buffers.EnsureCapacity(ref _bodyScratch, n);
-            Span<int> starts = stackalloc int[SweepStrips.MaxStrips + 2]; // not needed after: slots follow the order
-            _strips.Group(_bodyOrder.AsSpan(0, n), bodies: true, _bodyScratch, starts);
+            _strips.Group(_bodyOrder.AsSpan(0, n), bodies: true, _bodyScratch, _bodyStart);
+        }
+        else
+        {
+            _bodyStart[0] = _bodyStart[1] = 0; // one group of every body (those nothing moves among them)
+            _bodyStart[2] = n;
         }
 
         for (int k = 0; k < n; k++)

@@ -19,6 +19,7 @@ public sealed partial class SequentialImpulseSolver
     private WorkerThreads? _threads; // the world's, for the step begun last; null on one thread
     private readonly int[] _contactStart = new int[SweepStrips.MaxStrips + 2]; // per group (strips, then seams): its first contact, and the end
     private readonly int[] _activeStart = new int[SweepStrips.MaxStrips + 2]; // the same in _active, for the substep
+    private readonly int[] _bodyStart = new int[SweepStrips.MaxStrips + 2]; // per group (bodies nothing moves, then strips): its first place in the body order, and the end
     private int[] _bodyScratch = new int[InitialCapacity]; // where SweepStrips.Group puts the bodies in strips
     private int[] _contactScratch = new int[InitialCapacity]; // and the contacts
     private StripJob? _stripJob;
@@ -41,6 +42,7 @@ public sealed partial class SequentialImpulseSolver
         Shock,
         LocalSweep,
         SweepGatheringBands,
+        BuildBands,
         ScaleBands,
     }
 
@@ -123,6 +125,16 @@ public sealed partial class SequentialImpulseSolver
     {
         int strips = _strips.Count;
         int first = thread * strips / threads, end = (thread + 1) * strips / threads;
+        if (pass == StripPass.BuildBands)
+        {
+            for (int strip = first; strip < end; strip++)
+            {
+                BuildBandShare(strip); // over the strip's bodies, not its contacts
+            }
+
+            return;
+        }
+
         RunRange(thread, _activeStart[first], _activeStart[end], pass);
     }
 
@@ -187,6 +199,10 @@ public sealed partial class SequentialImpulseSolver
 
             case StripPass.SweepGatheringBands:
                 SweepGatheringBandRange(slot, start, end);
+                break;
+
+            case StripPass.BuildBands:
+                BuildBandShare(_strips.Count); // in place of the seam contacts: the bodies woken during the step
                 break;
 
             case StripPass.ScaleBands:
