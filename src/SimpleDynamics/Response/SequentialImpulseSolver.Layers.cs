@@ -327,6 +327,7 @@ public sealed partial class SequentialImpulseSolver
     /// Share <paramref name="share"/> of the band system (see <see cref="BuildBandSystem"/>): that of strip
     /// <paramref name="share"/>'s bodies, or, for the last share, of the bodies woken during the step; in slot order.
     /// </summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // as SweepGatheringBandRange
     private void BuildBandShare(int share)
     {
         int bands = _bandCount, strips = _strips.Count;
