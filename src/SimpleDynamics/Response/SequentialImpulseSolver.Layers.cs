@@ -54,7 +54,7 @@ public sealed partial class SequentialImpulseSolver
 
     private int[] _bandOf = new int[InitialCapacity]; // per active contact (position in _active): its band
     private Vector3[] _bandSums = new Vector3[2 * InitialCapacity]; // per slot, per band parity: Σ ±λ_i n_i of its contacts
-    private double[] _bandResidualSums = new double[2 * InitialCapacity]; // the same: what a moving immovable body adds to −Pᵀ v_n
+    private double[] _bandResidualSums = new double[2 * InitialCapacity]; // the same: what the velocity of a body no impulse moves (a kinematic one) adds to −Pᵀ v_n
     private int[] _bandOfSum = new int[2 * InitialCapacity]; // per slot, per band parity: 1 + the band summed there (0: none)
     private bool _bandSumsEmpty = true; // the three arrays above hold zeros everywhere (BuildBandSystem empties them as it reads)
     private double[] _bandDiagonal = new double[InitialCapacity], _bandUpper = new double[InitialCapacity];
@@ -282,7 +282,7 @@ public sealed partial class SequentialImpulseSolver
 
     /// <summary>
     /// The tridiagonal Pᵀ A P = Σ_s (1/m_s) G_sᵀ G_s (diagonal and upper neighbour; it is symmetric) and the
-    /// right-hand side −Pᵀ v_n = −Σ_s v_s · G_s (plus what moving immovable bodies add), in double precision: each
+    /// right-hand side −Pᵀ v_n = −Σ_s v_s · G_s (plus what moving kinematic bodies add), in double precision: each
     /// strip's bodies give their share of it (on the step's threads, each where its strip's sweeps ran), then the
     /// bodies woken during the step theirs, and the shares are added in that order, so that the sums are the same on
     /// any number of threads. Empties the band sums as it reads them, for the next gathering sweep.

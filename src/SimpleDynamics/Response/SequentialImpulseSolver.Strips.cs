@@ -8,7 +8,8 @@ namespace SimpleDynamics.Response;
 /// (<see cref="Strips"/>) at once, then the seam contacts between them, with exactly the result of one thread
 /// (see <see cref="SweepStrips"/>). Those are the passes over every contact and the local sweeps over the contacts
 /// still changing (SequentialImpulseSolver.LocalSweeps.cs), which a deep pile that stirs spends most of its sweeps in,
-/// and the layer correction's passes over the contacts (SequentialImpulseSolver.Layers.cs) between them.
+/// and the layer correction's passes (SequentialImpulseSolver.Layers.cs): its gathering sweep, the building of its band
+/// system from each strip's bodies, and the scaling of the impulses.
 /// </summary>
 public sealed partial class SequentialImpulseSolver
 {
