@@ -17,6 +17,7 @@ public sealed partial class SequentialImpulseSolver
         private Vector3D _momentumBefore, _externalImpulse;
         private double _impulseMoved;
         private double[] _direct = new double[16], _scale = new double[16];
+        private double _largestBefore; // the largest |−Σ λ_i v_n,i| of a band before the correction
 
         /// <summary>Corrections audited.</summary>
         public int Count { get; private set; }
@@ -41,12 +42,29 @@ public sealed partial class SequentialImpulseSolver
         /// </summary>
         public double LargestResidualError { get; private set; }
 
+        /// <summary>
+        /// After each correction whose solution was taken whole (no factor limited, a full step), the largest of the
+        /// bands' −Σ λ_i v_n,i summed contact by contact, as a fraction of the largest before it: the gradient of the
+        /// energy over the band factors, which the exact solution of the band system makes zero (the energy is then at
+        /// its least over every scaling of the bands).
+        /// </summary>
+        public double LargestGradientLeft { get; private set; }
+
+        /// <summary>Corrections whose solution was taken whole (see <see cref="LargestGradientLeft"/>).</summary>
+        public int Unlimited { get; private set; }
+
         /// <summary>The smallest normal impulse a correction left (a contact never pulls: ≥ 0).</summary>
         public float SmallestImpulse { get; private set; } = float.PositiveInfinity;
 
         internal void Before(SequentialImpulseSolver solver)
         {
             CheckResidual(solver);
+            _largestBefore = 0;
+            for (int band = 0; band < solver._bandCount; band++)
+            {
+                _largestBefore = Math.Max(_largestBefore, Math.Abs(_direct[band]));
+            }
+
             (_energyBefore, _momentumBefore) = Totals(solver);
             _externalImpulse = default;
             _impulseMoved = 0;
@@ -81,11 +99,45 @@ public sealed partial class SequentialImpulseSolver
 
             for (int i = 0; i < solver._activeCount; i++)
             {
-                SmallestImpulse = MathF.Min(SmallestImpulse, solver._constraints[solver._active[i]].NormalImpulse);
+                SmallestImpulse = MathF.Min(SmallestImpulse, Impulse(solver, i));
+            }
+
+            if (!solver._bandCorrectionLimited && _largestBefore > 0)
+            {
+                Unlimited++;
+                SumGradient(solver);
+                for (int band = 0; band < solver._bandCount; band++)
+                {
+                    LargestGradientLeft = Math.Max(LargestGradientLeft, Math.Abs(_direct[band]) / _largestBefore);
+                }
             }
         }
 
         private void CheckResidual(SequentialImpulseSolver solver)
+        {
+            SumGradient(solver);
+            for (int band = 0; band < solver._bandCount; band++)
+            {
+                if (_scale[band] > 0)
+                {
+                    LargestResidualError = Math.Max(LargestResidualError, Math.Abs(solver._bandResidual[band] - _direct[band]) / _scale[band]);
+                }
+            }
+        }
+
+        /// <summary>Contact <paramref name="i"/>'s normal impulse, as the next sweep will hold it (a pending correction scaled in).</summary>
+        private static float Impulse(SequentialImpulseSolver solver, int i)
+        {
+            ref ContactConstraint c = ref solver._constraints[solver._active[i]];
+            return solver._bandScalePending ? solver.ScaledImpulse(ref c, i) : c.NormalImpulse;
+        }
+
+        /// <summary>
+        /// Each band's −Σ λ_i v_n,i over its pressed contacts (λ_i as the next sweep will hold it) into
+        /// <see cref="_direct"/>, and Σ λ_i (|n_i · v_A| + |n_i · v_B|) into <see cref="_scale"/>; contacts between two
+        /// immovable bodies are in neither.
+        /// </summary>
+        private void SumGradient(SequentialImpulseSolver solver)
         {
             int bands = solver._bandCount;
             if (_direct.Length < bands)
@@ -101,7 +153,8 @@ public sealed partial class SequentialImpulseSolver
                 ref ContactConstraint c = ref solver._constraints[solver._active[i]];
                 ref VelocityState a = ref solver._bodies[c.A];
                 ref VelocityState b = ref solver._bodies[c.B];
-                if (c.NormalImpulse <= 0 || (a.InverseMass == 0 && b.InverseMass == 0))
+                float impulse = Impulse(solver, i);
+                if (impulse <= 0 || (a.InverseMass == 0 && b.InverseMass == 0))
                 {
                     continue;
                 }
@@ -109,16 +162,8 @@ public sealed partial class SequentialImpulseSolver
                 var normal = new Vector3D(c.Normal);
                 double alongA = Vector3D.Dot(normal, new Vector3D(a.Linear)), alongB = Vector3D.Dot(normal, new Vector3D(b.Linear));
                 int band = solver._bandOf[i];
-                _direct[band] -= c.NormalImpulse * (alongA - alongB); // −λ_i v_n,i (r × n = 0 for spheres)
-                _scale[band] += c.NormalImpulse * (Math.Abs(alongA) + Math.Abs(alongB));
-            }
-
-            for (int band = 0; band < bands; band++)
-            {
-                if (_scale[band] > 0)
-                {
-                    LargestResidualError = Math.Max(LargestResidualError, Math.Abs(solver._bandResidual[band] - _direct[band]) / _scale[band]);
-                }
+                _direct[band] -= impulse * (alongA - alongB); // −λ_i v_n,i (r × n = 0 for spheres)
+                _scale[band] += impulse * (Math.Abs(alongA) + Math.Abs(alongB));
             }
         }
 

@@ -15,13 +15,14 @@ public sealed partial class SequentialImpulseSolver
     private double[] _bandResidual = new double[InitialCapacity], _bandFactor = new double[InitialCapacity];
     private double[] _bandEliminated = new double[InitialCapacity];
     private double[] _bandShares = new double[3 * InitialCapacity]; // per share of BuildBandSystem: its diagonal, upper and right-hand side
+    private bool _bandCorrectionLimited; // the last solution was limited (some factor to ±½) or shortened by the line search
 
     /// <summary>
     /// The tridiagonal Pᵀ A P = Σ_s (1/m_s) G_sᵀ G_s (diagonal and upper neighbour; it is symmetric) and the
     /// right-hand side −Pᵀ v_n = −Σ_s v_s · G_s (plus what moving kinematic bodies add), in double precision: each
     /// strip's bodies give their share of it (on the step's threads, each where its strip's sweeps ran), then the
     /// bodies woken during the step theirs, and the shares are added in that order, so that the sums are the same on
-    /// any number of threads. Empties the band sums as it reads them, for the next gathering sweep.
+    /// any number of threads.
     /// </summary>
     private void BuildBandSystem(int bands)
     {
@@ -55,20 +56,18 @@ public sealed partial class SequentialImpulseSolver
 
             (_bandDiagonal[b], _bandUpper[b], _bandResidual[b]) = (diagonal, upper, residual);
         }
-
-        _bandSumsEmpty = true;
     }
 
     /// <summary>
     /// Share <paramref name="share"/> of the band system (see <see cref="BuildBandSystem"/>): that of strip
     /// <paramref name="share"/>'s bodies, or, for the last share, of the bodies woken during the step; in slot order.
     /// </summary>
-    [MethodImpl(MethodImplOptions.NoInlining)] // as SweepGatheringBandRange
+    [MethodImpl(MethodImplOptions.NoInlining)] // as SweepWithBandsRange
     private void BuildBandShare(int share)
     {
-        int bands = _bandCount, strips = _strips.Count;
-        int first = share < strips ? _bodyStart[share + 1] + 1 : _bodyStart[strips + 1] + 1; // slots follow the body order
-        int end = share < strips ? _bodyStart[share + 2] + 1 : _step!.Bodies.Length + 1;
+        int bands = _bandCount;
+        (int first, int end) = SlotsOfShare(share);
+        bool kinematicPushes = _kinematicPushes;
         Span<double> diagonal = _bandShares.AsSpan(3 * bands * share, bands);
         Span<double> upper = _bandShares.AsSpan(3 * bands * share + bands, bands);
         Span<double> residual = _bandShares.AsSpan(3 * bands * share + 2 * bands, bands);
@@ -89,24 +88,32 @@ public sealed partial class SequentialImpulseSolver
             if (even >= 0)
             {
                 diagonal[even] += inverseMass * sumEven.LengthSquared();
-                residual[even] += _bandResidualSums[2 * s] - Vector3D.Dot(velocity, new Vector3D(sumEven));
+                residual[even] += (kinematicPushes ? _bandResidualSums[2 * s] : 0) - Vector3D.Dot(velocity, new Vector3D(sumEven));
             }
 
             if (odd >= 0)
             {
                 diagonal[odd] += inverseMass * sumOdd.LengthSquared();
-                residual[odd] += _bandResidualSums[2 * s + 1] - Vector3D.Dot(velocity, new Vector3D(sumOdd));
+                residual[odd] += (kinematicPushes ? _bandResidualSums[2 * s + 1] : 0) - Vector3D.Dot(velocity, new Vector3D(sumOdd));
             }
 
             if (even >= 0 && odd >= 0)
             {
                 upper[Math.Min(even, odd)] += inverseMass * Vector3.Dot(sumEven, sumOdd);
             }
-
-            _bandSums[2 * s] = _bandSums[2 * s + 1] = default;
-            _bandOfSum[2 * s] = _bandOfSum[2 * s + 1] = 0;
-            _bandResidualSums[2 * s] = _bandResidualSums[2 * s + 1] = 0;
         }
+    }
+
+    /// <summary>
+    /// The slots of share <paramref name="share"/> of the bodies: strip <paramref name="share"/>'s, or, for the last
+    /// share, the bodies woken during the step (slots follow the body order).
+    /// </summary>
+    private (int First, int End) SlotsOfShare(int share)
+    {
+        int strips = _strips.Count;
+        return share < strips
+            ? (_bodyStart[share + 1] + 1, _bodyStart[share + 2] + 1)
+            : (_bodyStart[strips + 1] + 1, _step!.Bodies.Length + 1);
     }
 
     /// <summary>
@@ -136,6 +143,7 @@ public sealed partial class SequentialImpulseSolver
             _bandFactor[b] = previousFactor = (_bandResidual[b] - lower * previousFactor) / pivot;
         }
 
+        _bandCorrectionLimited = false;
         for (int b = bands - 1; b >= 0; b--)
         {
             if (!double.IsNaN(_bandEliminated[b]) && b + 1 < bands)
@@ -143,7 +151,9 @@ public sealed partial class SequentialImpulseSolver
                 _bandFactor[b] -= _bandEliminated[b] * _bandFactor[b + 1];
             }
 
-            _bandFactor[b] = Math.Clamp(_bandFactor[b], -0.5, 0.5); // NaN stays NaN, and fails the test below
+            double factor = _bandFactor[b];
+            _bandFactor[b] = Math.Clamp(factor, -0.5, 0.5); // NaN stays NaN, and fails the test below
+            _bandCorrectionLimited |= _bandFactor[b] != factor;
         }
 
         double gain = 0, curvature = 0; // dᵀr and dᵀHd
@@ -163,6 +173,7 @@ public sealed partial class SequentialImpulseSolver
         }
 
         double step = Math.Min(1, gain / curvature);
+        _bandCorrectionLimited |= step < 1 - 1e-6;
         for (int b = 0; b < bands; b++)
         {
             _bandFactor[b] *= step;

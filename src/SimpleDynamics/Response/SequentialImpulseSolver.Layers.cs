@@ -56,7 +56,10 @@ public sealed partial class SequentialImpulseSolver
     private Vector3[] _bandSums = new Vector3[2 * InitialCapacity]; // per slot, per band parity: Σ ±λ_i n_i of its contacts
     private double[] _bandResidualSums = new double[2 * InitialCapacity]; // the same: what the velocity of a body no impulse moves (a kinematic one) adds to −Pᵀ v_n
     private int[] _bandOfSum = new int[2 * InitialCapacity]; // per slot, per band parity: 1 + the band summed there (0: none)
-    private bool _bandSumsEmpty = true; // the three arrays above hold zeros everywhere (BuildBandSystem empties them as it reads)
+    private bool _bandSumsEmpty = true; // the arrays above hold zeros everywhere (ApplyBandFactors empties them as it reads)
+    private bool _kinematicPushes; // some body's _bandResidualSums are not zero (only a moving kinematic body writes them)
+    private bool _gatheringBands; // the sweep running adds its contacts to the band sums
+    private bool _bandScalePending; // a correction has moved the bodies; the next sweep scales its impulses, contact by contact
     private float _meanDiameter; // of the bodies of the pile's contacts, this step (PileMeasure)
     private bool _bandsAssigned; // in this substep (MeasureConstraints clears it)
     private int _bandCount;
@@ -85,8 +88,8 @@ public sealed partial class SequentialImpulseSolver
 
     /// <summary>
     /// One measured sweep (<see cref="Sweep"/>) that gathers the band sums as it leaves each contact, then, unless it
-    /// converged, the layer correction (see the file's remarks): the tridiagonal Galerkin system, its solution and the
-    /// scaled impulses. Corrects nothing when the system cannot be formed (fewer than two bands or too many, a body
+    /// converged, the layer correction (see the file's remarks): the tridiagonal Galerkin system, its solution, and the
+    /// bodies moved by it (the impulses follow in the next sweep, <see cref="ApplyBandFactors"/>). Corrects nothing when the system cannot be formed (fewer than two bands or too many, a body
     /// whose contacts span more than two bands) or its solution is not finite. Returns whether the sweep converged.
     /// </summary>
     private bool SweepAndCorrectLayers()
@@ -114,6 +117,7 @@ public sealed partial class SequentialImpulseSolver
         BuildBandSystem(_bandCount);
         if (!SolveBandSystem(_bandCount))
         {
+            EmptyBandSums();
             return false;
         }
 
@@ -122,7 +126,7 @@ public sealed partial class SequentialImpulseSolver
             Audit.Before(this);
         }
 
-        ScaleBandImpulses();
+        ApplyBandFactors();
         LayerCorrectionsThisStep++;
         if (AuditLayerCorrections)
         {
@@ -193,29 +197,44 @@ public sealed partial class SequentialImpulseSolver
     {
         Array.Clear(_bandSums, 0, _bandSums.Length);
         Array.Clear(_bandOfSum, 0, _bandOfSum.Length);
-        Array.Clear(_bandResidualSums, 0, _bandResidualSums.Length);
+        EmptyKinematicPushes();
         _bandSumsEmpty = true;
+    }
+
+    private void EmptyKinematicPushes()
+    {
+        if (_kinematicPushes)
+        {
+            Array.Clear(_bandResidualSums, 0, _bandResidualSums.Length);
+            _kinematicPushes = false;
+        }
     }
 
     /// <summary>
     /// The measured sweep of <see cref="Sweep"/> over <see cref="_active"/>[<paramref name="start"/>..<paramref name="end"/>),
-    /// which also adds each pressed contact, as the sweep leaves it, to its bodies' band sums (<see cref="GatherBand"/>);
-    /// keeps in result 3 whether some body's contacts spanned too many bands. Runs in strips like every sweep: a strip's
-    /// contacts move only its own bodies, and the seam contacts come after, so every sum is taken in storage order on
-    /// any number of threads.
+    /// which first scales each contact's impulse by the correction just applied to its bodies, if one is pending
+    /// (<see cref="ScaledImpulse"/>), and adds each pressed contact, as the sweep leaves it, to its bodies' band sums if
+    /// a correction is being gathered (<see cref="GatherBand"/>); keeps in result 3 whether some body's contacts spanned
+    /// too many bands. Runs in strips like every sweep: a strip's contacts move only its own bodies, and the seam
+    /// contacts come after, so every sum is taken in storage order on any number of threads.
     /// </summary>
     [MethodImpl(MethodImplOptions.NoInlining)] // keeps RunRange, whose sweeps are the hot loop, as small as before
-    private void SweepGatheringBandRange(int slot, int start, int end)
+    private void SweepWithBandsRange(int slot, int start, int end)
     {
         float largestChange = 0, largestImpulse = 0, largestSpeedChange = 0;
-        bool formed = true;
+        bool formed = true, scale = _bandScalePending, gather = _gatheringBands;
         for (int i = start; i < end; i++)
         {
             ref ContactConstraint c = ref _constraints[_active[i]];
+            if (scale)
+            {
+                c.NormalImpulse = ScaledImpulse(ref c, i);
+            }
+
             largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(ref c, out float change));
             largestChange = MathF.Max(largestChange, change);
             largestImpulse = MathF.Max(largestImpulse, c.NormalImpulse);
-            if (c.NormalImpulse > 0 && formed)
+            if (gather && c.NormalImpulse > 0 && formed)
             {
                 formed = GatherBand(ref c, _bandOf[i]);
             }
@@ -247,7 +266,11 @@ public sealed partial class SequentialImpulseSolver
             // −λ v_n = −λ n · v_A + λ n · v_B: the movable body's own term comes from its sums (BuildBandSystem).
             int mover = movesA ? c.A : c.B;
             double other = c.NormalImpulse * (double)Vector3.Dot(c.Normal, _bodies[movesA ? c.B : c.A].Linear);
-            _bandResidualSums[2 * mover + (band & 1)] += movesA ? other : -other;
+            if (other != 0) // zero against the ground and walls
+            {
+                _bandResidualSums[2 * mover + (band & 1)] += movesA ? other : -other;
+                _kinematicPushes = true; // the same value from any thread
+            }
         }
 
         return true;
@@ -277,28 +300,69 @@ public sealed partial class SequentialImpulseSolver
     }
 
     /// <summary>
-    /// Scales each pressed contact's normal impulse by 1 + α of its band, and its bodies' velocities with it (eq. 6);
-    /// in strips on the step's threads, like the sweeps.
+    /// Applies the correction's band factors α to the bodies: each moves by Δv_s = (1/m_s) Σ α_b G_s,b over its bands,
+    /// which is Σ ±α λ_i n_i / m_s over its pressed contacts (eq. 6), at one write per body; in strips on the step's
+    /// threads, like the build. The contacts' impulses λ_i ← (1 + α) λ_i follow in the next sweep, each just before it
+    /// is solved (<see cref="SweepWithBandsRange"/>), where the sweep reads the contact anyway; nothing reads them
+    /// before. (A pass over the contacts did both at once: it cost about as much as the build, per correction.)
+    /// Empties the band sums as it reads them.
     /// </summary>
-    private void ScaleBandImpulses() => RunPass(StripPass.ScaleBands);
-
-    /// <summary>The scaling of <see cref="ScaleBandImpulses"/> over <see cref="_active"/>[<paramref name="start"/>..<paramref name="end"/>).</summary>
-    [MethodImpl(MethodImplOptions.NoInlining)] // as SweepGatheringBandRange
-    private void ScaleBandRange(int start, int end)
+    private void ApplyBandFactors()
     {
-        for (int i = start; i < end; i++)
+        if (_substepInStrips)
         {
-            ref ContactConstraint c = ref _constraints[_active[i]];
-            float change = (float)(_bandFactor[_bandOf[i]] * c.NormalImpulse);
-            if (change == 0)
+            RunInStrips(StripPass.ApplyBands);
+        }
+        else
+        {
+            for (int share = 0; share <= _strips.Count; share++)
             {
-                continue;
+                ApplyBandShare(share);
+            }
+        }
+
+        EmptyKinematicPushes();
+        _bandSumsEmpty = true;
+        _bandScalePending = true;
+    }
+
+    /// <summary>Share <paramref name="share"/> of <see cref="ApplyBandFactors"/>: the same bodies as that share of <see cref="BuildBandShare"/>.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // as SweepWithBandsRange
+    private void ApplyBandShare(int share)
+    {
+        (int first, int end) = SlotsOfShare(share);
+        for (int s = first; s < end; s++)
+        {
+            int even = _bandOfSum[2 * s] - 1, odd = _bandOfSum[2 * s + 1] - 1;
+            if (even < 0 && odd < 0)
+            {
+                continue; // nothing was summed here
             }
 
-            c.NormalImpulse = MathF.Max(c.NormalImpulse + change, 0f);
-            Vector3 push = change * c.Normal;
-            _bodies[c.A].Linear += push * _bodies[c.A].InverseMass;
-            _bodies[c.B].Linear -= push * _bodies[c.B].InverseMass;
+            Vector3 change = default;
+            if (even >= 0)
+            {
+                change += (float)_bandFactor[even] * _bandSums[2 * s];
+            }
+
+            if (odd >= 0)
+            {
+                change += (float)_bandFactor[odd] * _bandSums[2 * s + 1];
+            }
+
+            _bodies[s].Linear += change * _bodies[s].InverseMass;
+            _bandSums[2 * s] = _bandSums[2 * s + 1] = default;
+            _bandOfSum[2 * s] = _bandOfSum[2 * s + 1] = 0;
         }
+    }
+
+    /// <summary>
+    /// Contact <paramref name="i"/>'s (in <see cref="_active"/>) normal impulse scaled by 1 + α of its band, as the
+    /// pending correction has already moved its bodies (never below zero: α ≥ −½).
+    /// </summary>
+    private float ScaledImpulse(ref ContactConstraint c, int i)
+    {
+        float change = (float)(_bandFactor[_bandOf[i]] * c.NormalImpulse);
+        return MathF.Max(c.NormalImpulse + change, 0f);
     }
 }

@@ -8,8 +8,8 @@ namespace SimpleDynamics.Response;
 /// (<see cref="Strips"/>) at once, then the seam contacts between them, with exactly the result of one thread
 /// (see <see cref="SweepStrips"/>). Those are the passes over every contact and the local sweeps over the contacts
 /// still changing (SequentialImpulseSolver.LocalSweeps.cs), which a deep pile that stirs spends most of its sweeps in,
-/// and the layer correction's passes (SequentialImpulseSolver.Layers.cs): its gathering sweep, the building of its band
-/// system from each strip's bodies, and the scaling of the impulses.
+/// and the layer correction's passes (SequentialImpulseSolver.Layers.cs): its gathering sweep, and the building of its
+/// band system from each strip's bodies and the moving of them by its factors.
 /// </summary>
 public sealed partial class SequentialImpulseSolver
 {
@@ -42,9 +42,9 @@ public sealed partial class SequentialImpulseSolver
         MeasuredSweep,
         Shock,
         LocalSweep,
-        SweepGatheringBands,
+        SweepWithBands,
         BuildBands,
-        ScaleBands,
+        ApplyBands,
     }
 
     /// <summary>
@@ -126,11 +126,11 @@ public sealed partial class SequentialImpulseSolver
     {
         int strips = _strips.Count;
         int first = thread * strips / threads, end = (thread + 1) * strips / threads;
-        if (pass == StripPass.BuildBands)
+        if (pass is StripPass.BuildBands or StripPass.ApplyBands)
         {
             for (int strip = first; strip < end; strip++)
             {
-                BuildBandShare(strip); // over the strip's bodies, not its contacts
+                BodyShare(pass, strip); // over the strip's bodies, not its contacts
             }
 
             return;
@@ -198,17 +198,26 @@ public sealed partial class SequentialImpulseSolver
                 SweepMarkedRange(slot, start, end);
                 break;
 
-            case StripPass.SweepGatheringBands:
-                SweepGatheringBandRange(slot, start, end);
+            case StripPass.SweepWithBands:
+                SweepWithBandsRange(slot, start, end);
                 break;
 
-            case StripPass.BuildBands:
-                BuildBandShare(_strips.Count); // in place of the seam contacts: the bodies woken during the step
+            case StripPass.BuildBands or StripPass.ApplyBands:
+                BodyShare(pass, _strips.Count); // in place of the seam contacts: the bodies woken during the step
                 break;
+        }
+    }
 
-            case StripPass.ScaleBands:
-                ScaleBandRange(start, end);
-                break;
+    /// <summary>A pass over a share of the bodies (see <see cref="SlotsOfShare"/>) instead of a range of contacts.</summary>
+    private void BodyShare(StripPass pass, int share)
+    {
+        if (pass == StripPass.BuildBands)
+        {
+            BuildBandShare(share);
+        }
+        else
+        {
+            ApplyBandShare(share);
         }
     }
 

@@ -1,4 +1,5 @@
 using System;
+using System.Diagnostics;
 using System.Numerics;
 using System.Runtime.CompilerServices;
 using SimpleDynamics.Collision;
@@ -92,6 +93,8 @@ public sealed partial class SequentialImpulseSolver
                 ? SweepAndCorrectLayers() // a deep pile's smooth error, which sweeps carry only a few layers (see LayerCorrection)
                 : Sweep() <= _convergenceTolerance;
         }
+
+        Debug.Assert(!_bandScalePending, "a layer correction is always followed by a sweep, which scales its impulses");
     }
 
     /// <summary>One Gauss–Seidel sweep over every contact, bottom-up, when nothing asks whether it converged.</summary>
@@ -116,7 +119,9 @@ public sealed partial class SequentialImpulseSolver
     private float Sweep(bool gatherBands = false)
     {
         SweepsThisStep++;
-        RunPass(gatherBands ? StripPass.SweepGatheringBands : StripPass.MeasuredSweep);
+        _gatheringBands = gatherBands;
+        RunPass(gatherBands || _bandScalePending ? StripPass.SweepWithBands : StripPass.MeasuredSweep);
+        _bandScalePending = false;
         float largestSpeedChange = LargestOfPass(0), largestChange = LargestOfPass(1), largestImpulse = LargestOfPass(2);
         if (_gravity != Vector3.Zero)
         {

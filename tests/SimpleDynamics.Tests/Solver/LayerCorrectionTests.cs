@@ -20,6 +20,9 @@ namespace SimpleDynamics.Tests.Solver;
 public class LayerCorrectionTests
 {
     private const float Dt = 1f / 60f;
+
+    /// <summary>The gradient a correction taken whole may leave, as a fraction of the largest before it (float velocities).</summary>
+    private const double GradientLeft = 1e-3;
     private readonly ITestOutputHelper _output;
 
     public LayerCorrectionTests(ITestOutputHelper output) => _output = output;
@@ -103,8 +106,8 @@ public class LayerCorrectionTests
     [Fact]
     public void Every_layer_correction_of_a_generated_deep_pile_keeps_the_laws_of_impulses()
     {
-        int piles = 0, corrected = 0, corrections = 0;
-        double largestFall = 0;
+        int piles = 0, corrected = 0, corrections = 0, unlimited = 0;
+        double largestFall = 0, largestGradient = 0;
         PropertyCheck.Run(Piles, pile =>
         {
             var solver = new SequentialImpulseSolver(pile.Restitution, pile.Friction) { AuditLayerCorrections = true };
@@ -119,6 +122,8 @@ public class LayerCorrectionTests
             corrected += audit.Count > 0 ? 1 : 0;
             corrections += audit.Count;
             largestFall = Math.Max(largestFall, audit.LargestEnergyFall);
+            unlimited += audit.Unlimited;
+            largestGradient = Math.Max(largestGradient, audit.LargestGradientLeft);
             Law.Holds(audit.Count == 0 || audit.LargestEnergyRise <= 1e-6,
                 $"a correction raised the kinetic energy by {audit.LargestEnergyRise:E2} of itself");
             Law.Holds(audit.Count == 0 || audit.LargestMomentumError <= 1e-4,
@@ -126,9 +131,13 @@ public class LayerCorrectionTests
             Law.Holds(audit.Count == 0 || audit.SmallestImpulse >= 0, $"a correction left a normal impulse of {audit.SmallestImpulse}");
             Law.Holds(audit.Count == 0 || audit.LargestResidualError <= 1e-4,
                 $"a band's right-hand side differed from −Σ λ_i v_n,i by {audit.LargestResidualError:E2} of its terms");
+            Law.Holds(audit.Unlimited == 0 || audit.LargestGradientLeft <= GradientLeft,
+                $"after a correction taken whole, a band's −Σ λ_i v_n,i was {audit.LargestGradientLeft:E2} of the largest before it: not the least energy");
         }, seed: 1601, maxTest: 40);
 
-        _output.WriteLine($"{corrected} of {piles} piles corrected, {corrections} corrections; the largest fall of the energy {largestFall:P1}");
+        _output.WriteLine($"{corrected} of {piles} piles corrected, {corrections} corrections; the largest fall of the energy {largestFall:P1}; " +
+            $"{unlimited} taken whole, leaving at most {largestGradient:E1} of the gradient");
+        Assert.True(unlimited > corrections / 4, $"only {unlimited} of {corrections} corrections were taken whole: the least-energy check checks too little");
         Assert.True(corrected > piles / 3, $"only {corrected} of {piles} piles had a layer correction: the property checks too little");
         Assert.True(largestFall > 1e-3, "no correction lowered the energy by as much as 0.1 %: it does nothing");
     }
