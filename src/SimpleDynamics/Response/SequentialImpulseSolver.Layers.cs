@@ -38,11 +38,14 @@ namespace SimpleDynamics.Response;
 /// sweep always follows (friction is clamped to the new cone there). The tests audit all three on generated deep
 /// piles (LayerCorrectionTests).</para>
 /// <para><b>When.</b> Only in a substep that has spent 2 × <see cref="ExtraIterations"/> extra sweeps without
-/// converging, after each further sweep: a correction costs about as much as a sweep, and a pile that is still landing
-/// converges, or not, by sweeps alone. After every extra sweep instead, 2,400 discs poured 60 deep into a box 40 wide
-/// took 5.7 s to fall asleep instead of 3.3 s, with no fewer sweeps (3.7 s with the rule); on the 16,000-disc pit
-/// loaded from a saved pour, 180 steps took 71 s instead of 63 s without (59 s with the rule; 148 ms a step in the
-/// last second against 237 ms without; benchmarks/README.md, 2026-12-04).</para>
+/// converging, then after every second further sweep (<see cref="LayerCorrectionInterval"/>): a correction costs
+/// about as much as a sweep, and a pile that is still landing converges, or not, by sweeps alone. After every extra
+/// sweep from the first instead, 2,400 discs poured 60 deep into a box 40 wide took 5.7 s to fall asleep instead of
+/// 3.3 s, with no fewer sweeps (3.7 s with the rule); on the 16,000-disc pit loaded from a saved pour, 180 steps took
+/// 71 s instead of 63 s without (59 s with the rule; benchmarks/README.md, 2026-12-04). After each further sweep
+/// instead of every second, four pours of that pit, spawn to asleep, took 156–194 s of wall time instead of
+/// 123–156 s (mean 173 s against 140 s), and 60 steps of the saved pile 630 sweeps a step instead of 503 (every
+/// third: 649, fourth: 566, eighth: 679; benchmarks/README.md, 2026-12-04, ninth session).</para>
 /// </remarks>
 public sealed partial class SequentialImpulseSolver
 {
@@ -83,8 +86,23 @@ public sealed partial class SequentialImpulseSolver
     /// <summary>What the audited layer corrections did, for tests (see <see cref="LayerCorrectionAudit"/>).</summary>
     internal LayerCorrectionAudit Audit { get; } = new();
 
+    /// <summary>
+    /// Once a substep has spent 2 × <see cref="ExtraIterations"/> extra sweeps, a layer correction follows every this
+    /// many further sweeps (see the file's remarks, "When"). Internal: measured, not a user's choice.
+    /// </summary>
+    internal int LayerCorrectionInterval { get; set; } = 2;
+
     /// <summary>Whether this step's pile is deep enough for the layer correction (see <see cref="LayerCorrection"/>).</summary>
     private bool CorrectsLayers => LayerCorrection && _extraSweeps > _extraIterations && _gravity != Vector3.Zero;
+
+    /// <summary>
+    /// Whether extra sweep number <paramref name="extra"/> (from 0) of this substep gathers and is followed by a layer
+    /// correction: from sweep 2 × <see cref="ExtraIterations"/> on, every <see cref="LayerCorrectionInterval"/>th,
+    /// never the last (a sweep must follow a correction: it scales the impulses, <see cref="ApplyBandFactors"/>).
+    /// </summary>
+    private bool CorrectsLayersAfter(int extra) =>
+        extra >= 2 * _extraIterations && extra + 1 < _extraSweeps && CorrectsLayers
+        && (extra - 2 * _extraIterations) % LayerCorrectionInterval == 0;
 
     /// <summary>
     /// One measured sweep (<see cref="Sweep"/>) that gathers the band sums as it leaves each contact, then, unless it

@@ -89,7 +89,7 @@ public sealed partial class SequentialImpulseSolver
 
         for (; extra < _extraSweeps && !converged; extra++)
         {
-            converged = extra >= 2 * _extraIterations && extra + 1 < _extraSweeps && CorrectsLayers
+            converged = CorrectsLayersAfter(extra)
                 ? SweepAndCorrectLayers() // a deep pile's smooth error, which sweeps carry only a few layers (see LayerCorrection)
                 : Sweep() <= _convergenceTolerance;
         }
