@@ -7,7 +7,7 @@ namespace SimpleDynamics.Response;
 
 /// <summary>
 /// The layer correction's coarse system (SequentialImpulseSolver.Layers.cs): the tridiagonal Galerkin system built
-/// from the bodies' band sums, and its solution, limited and line-searched.
+/// from the bodies' band sums, its solution, limited and line-searched, and the bodies moved by it.
 /// </summary>
 public sealed partial class SequentialImpulseSolver
 {
@@ -180,5 +180,72 @@ public sealed partial class SequentialImpulseSolver
         }
 
         return true;
+    }
+
+    /// <summary>
+    /// Applies the correction's band factors α to the bodies: each moves by Δv_s = (1/m_s) Σ α_b G_s,b over its bands,
+    /// which is Σ ±α λ_i n_i / m_s over its pressed contacts (eq. 6), at one write per body; in strips on the step's
+    /// threads, like the build. The contacts' impulses λ_i ← (1 + α) λ_i follow in the next sweep, each just before it
+    /// is solved (<see cref="SweepWithBandsRange"/>), where the sweep reads the contact anyway; nothing reads them
+    /// before. A pass over the contacts doing both costs about as much as building the system; this one, a write per
+    /// body. Empties the band sums as it reads them.
+    /// </summary>
+    private void ApplyBandFactors()
+    {
+        if (_substepInStrips)
+        {
+            RunInStrips(StripPass.ApplyBands);
+        }
+        else
+        {
+            for (int share = 0; share <= _strips.Count; share++)
+            {
+                ApplyBandShare(share);
+            }
+        }
+
+        EmptyKinematicPushes();
+        _bandSumsEmpty = true;
+        _bandScalePending = true;
+    }
+
+    /// <summary>Share <paramref name="share"/> of <see cref="ApplyBandFactors"/>: the same bodies as that share of <see cref="BuildBandShare"/>.</summary>
+    [MethodImpl(MethodImplOptions.NoInlining)] // as SweepWithBandsRange
+    private void ApplyBandShare(int share)
+    {
+        (int first, int end) = SlotsOfShare(share);
+        for (int s = first; s < end; s++)
+        {
+            int even = _bandOfSum[2 * s] - 1, odd = _bandOfSum[2 * s + 1] - 1;
+            if (even < 0 && odd < 0)
+            {
+                continue; // nothing was summed here
+            }
+
+            Vector3 change = default;
+            if (even >= 0)
+            {
+                change += (float)_bandFactor[even] * _bandSums[2 * s];
+            }
+
+            if (odd >= 0)
+            {
+                change += (float)_bandFactor[odd] * _bandSums[2 * s + 1];
+            }
+
+            _bodies[s].Linear += change * _bodies[s].InverseMass;
+            _bandSums[2 * s] = _bandSums[2 * s + 1] = default;
+            _bandOfSum[2 * s] = _bandOfSum[2 * s + 1] = 0;
+        }
+    }
+
+    /// <summary>
+    /// Contact <paramref name="i"/>'s (in <see cref="_active"/>) normal impulse scaled by 1 + α of its band, as the
+    /// pending correction has already moved its bodies (never below zero: α ≥ −½).
+    /// </summary>
+    private float ScaledImpulse(ref ContactConstraint c, int i)
+    {
+        float change = (float)(_bandFactor[_bandOf[i]] * c.NormalImpulse);
+        return MathF.Max(c.NormalImpulse + change, 0f);
     }
 }
