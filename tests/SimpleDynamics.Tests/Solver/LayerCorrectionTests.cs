@@ -23,6 +23,7 @@ public class LayerCorrectionTests
 
     /// <summary>The gradient a correction taken whole may leave, as a fraction of the largest before it (float velocities).</summary>
     private const double GradientLeft = 1e-3;
+
     private readonly ITestOutputHelper _output;
 
     public LayerCorrectionTests(ITestOutputHelper output) => _output = output;
