@@ -28,17 +28,7 @@ public sealed partial class SequentialImpulseSolver
     {
         int shares = _strips.Count + 1;
         Buffers.EnsureCapacity(ref _bandShares, 3 * bands * shares);
-        if (_substepInStrips)
-        {
-            RunInStrips(StripPass.BuildBands);
-        }
-        else
-        {
-            for (int share = 0; share < shares; share++)
-            {
-                BuildBandShare(share);
-            }
-        }
+        RunOverBodies(StripPass.BuildBands);
 
         Buffers.EnsureCapacity(ref _bandDiagonal, bands);
         Buffers.EnsureCapacity(ref _bandUpper, bands);
@@ -192,18 +182,7 @@ public sealed partial class SequentialImpulseSolver
     /// </summary>
     private void ApplyBandFactors()
     {
-        if (_substepInStrips)
-        {
-            RunInStrips(StripPass.ApplyBands);
-        }
-        else
-        {
-            for (int share = 0; share <= _strips.Count; share++)
-            {
-                ApplyBandShare(share);
-            }
-        }
-
+        RunOverBodies(StripPass.ApplyBands);
         EmptyKinematicPushes();
         _bandSumsEmpty = true;
         _bandScalePending = true;

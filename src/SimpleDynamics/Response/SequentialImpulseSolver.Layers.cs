@@ -209,7 +209,7 @@ public sealed partial class SequentialImpulseSolver
             EmptyBandSums();
         }
 
-        _bandSumsEmpty = false; // until BuildBandSystem or EmptyBandSums has emptied them again
+        _bandSumsEmpty = false; // until ApplyBandFactors or EmptyBandSums has emptied them again
     }
 
     private void EmptyBandSums()

@@ -208,6 +208,25 @@ public sealed partial class SequentialImpulseSolver
         }
     }
 
+    /// <summary>
+    /// Runs a pass over the bodies (<see cref="StripPass.BuildBands"/> or <see cref="StripPass.ApplyBands"/>) share by
+    /// share: each strip's bodies on the thread that swept the strip, if this substep runs in strips, then the bodies
+    /// woken during the step; on one thread, every share in the same order.
+    /// </summary>
+    private void RunOverBodies(StripPass pass)
+    {
+        if (_substepInStrips)
+        {
+            RunInStrips(pass);
+            return;
+        }
+
+        for (int share = 0; share <= _strips.Count; share++)
+        {
+            BodyShare(pass, share);
+        }
+    }
+
     /// <summary>A pass over a share of the bodies (see <see cref="SlotsOfShare"/>) instead of a range of contacts.</summary>
     private void BodyShare(StripPass pass, int share)
     {
