@@ -270,7 +270,7 @@ public sealed partial class SequentialImpulseSolver
             c.RadiusA = _radii[c.A];
             c.RadiusB = _radii[c.B];
             c.PlaneOffset = contact.IsPlaneContact ? contact.PlaneOffset : float.NaN;
-            if (WarmStarting && _cache.TryGet(contact.Key, out float normalImpulse, out Vector3 frictionImpulse))
+            if (WarmStarting && _cache.TryGet(k, contact.Key, out float normalImpulse, out Vector3 frictionImpulse))
             {
                 c.NormalImpulse = normalImpulse * _warmStartScale;
                 c.FrictionImpulse = frictionImpulse * _warmStartScale;

@@ -319,7 +319,6 @@ public sealed partial class SequentialImpulseSolver
             contact.TangentImpulse += c.StepFrictionImpulse;
         }
 
-        _cache.EndStep();
         _cache.SubstepLength = _step!.SubstepLength;
     }
 }
