@@ -16,7 +16,9 @@ public sealed partial class World
     private const int InitialTouchCapacity = 16;
 
     private readonly ContactEvents _contactEvents = new();
-    private PairSet<ContactEvent> _previousTouch = new(); // the awake pairs touching after the step before
+    private readonly PairOrder _previousTouch = new(); // the awake pairs touching after the step before, in order
+    private ContactEvent[] _previousPairs = Array.Empty<ContactEvent>(); // by position in _previousTouch
+    private bool[] _stillTouching = Array.Empty<bool>(); // by position in _previousTouch: found again this step
     private PairSet<SensorEvent> _previousSensor = new();
 
     // The touching contacts, in the order of ContactEvents.Touching: first the held pairs of sleeping bodies, then
@@ -131,15 +133,20 @@ public sealed partial class World
         ContactEvents events = _contactEvents;
         events.Clear();
 
-        // Last step's awake pairs become "previous"; the held pairs of sleeping bodies stay as they are, unseen, so
-        // a pile that sleeps costs nothing here and neither ends nor begins touching.
+        // Last step's awake pairs become "previous", in their order, which this step's mostly repeat (PairOrder); the
+        // held pairs of sleeping bodies stay as they are, unseen, so a pile that sleeps costs nothing here and neither
+        // ends nor begins touching.
         PairSet<ContactEvent> touching = events.Touch;
-        PairSet<ContactEvent> previous = _previousTouch;
-        previous.Clear();
+        PairOrder previous = _previousTouch;
         ReadOnlySpan<ContactEvent> items = touching.Items;
+        previous.Begin(items.Length - touching.HeldCount);
+        previous.Fit(ref _previousPairs);
+        previous.Fit(ref _stillTouching);
         for (int i = touching.HeldCount; i < items.Length; i++)
         {
-            previous.Add(touching.KeyAt(i), items[i]);
+            int position = previous.Add(touching.KeyAt(i));
+            _previousPairs[position] = items[i];
+            _stillTouching[position] = false;
         }
 
         touching.TruncateTo(touching.HeldCount);
@@ -172,20 +179,26 @@ public sealed partial class World
 
             Buffers.EnsureCapacity(ref _touchContacts, touching.Count);
             _touchContacts[touching.Count - 1] = contact;
-            if (!previous.Contains(key))
+            int before = previous.Find(touching.Count - 1 - touching.HeldCount, key);
+            if (before < 0)
             {
                 events.AddBegin(pair);
             }
-        }
-
-        ReadOnlySpan<ContactEvent> before = previous.Items;
-        for (int i = 0; i < before.Length; i++)
-        {
-            if (!touching.Contains(previous.KeyAt(i)))
+            else
             {
-                events.AddEnd(before[i]);
+                _stillTouching[before] = true;
             }
         }
+
+        for (int i = 0; i < previous.Count; i++)
+        {
+            if (!_stillTouching[i])
+            {
+                events.AddEnd(_previousPairs[i]);
+            }
+        }
+
+        Array.Clear(_previousPairs, 0, previous.Count); // no references to bodies that may be removed
 
         LinkTouchesToBodies(touching);
         ReportSensorOverlaps(events);
@@ -387,7 +400,6 @@ public sealed partial class World
         }
 
         _contactEvents.ShrinkIfIdle();
-        _previousTouch.ShrinkIfIdle();
         _previousSensor.ShrinkIfIdle();
     }
 
@@ -402,6 +414,8 @@ public sealed partial class World
         _contactEvents.TrimExcess();
         _previousTouch.Clear();
         _previousTouch.TrimExcess();
+        _previousPairs = Array.Empty<ContactEvent>();
+        _stillTouching = Array.Empty<bool>();
         _previousSensor.Clear();
         _previousSensor.TrimExcess();
     }
