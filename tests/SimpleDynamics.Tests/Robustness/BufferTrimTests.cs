@@ -53,7 +53,7 @@ public class BufferTrimTests
         long grown = Heap() - baseline;
         RemoveAll(world);
 
-        // The policy's steps, and one more for the contact cache's second table, reallocated when it is next written.
+        // The policy's steps, and one to spare.
         Step(world, ShrinkPolicy.QuietSteps + 1);
         long shrunk = Heap() - baseline;
         _output.WriteLine($"empty world {emptyWorld / 1024} KiB, crowd {grown / 1024} KiB, after {ShrinkPolicy.QuietSteps + 1} empty steps {shrunk / 1024} KiB");
