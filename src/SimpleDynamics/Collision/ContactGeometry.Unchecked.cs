@@ -20,6 +20,7 @@ public static partial class ContactGeometry
         /// Penetration of two circles along the line of centres, r_A + r_B − d, and the unit normal from B to A.
         /// Coincident centres (d below about 1e-6 of the radii) get the defined normal +y, never NaN.
         /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] // per contact and substep in the solver's measuring loop
         public static float CirclePenetration(Vector3 centreA, float radiusA, Vector3 centreB, float radiusB, out Vector3 normal)
         {
             Vector3 delta = centreA - centreB;
