@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using SimpleDynamics.Bodies;
 using SimpleDynamics.Collision;
 using SimpleDynamics.Mathematics;
@@ -94,14 +95,15 @@ internal sealed partial class ImpactStepper
             // Along straight chords the squared distance |d + v s|² is convex in s, so a pair whose distance does not
             // fall now (d · v ≥ 0) does not fall during the rest of the substep: most contacts of a resting pile,
             // which therefore need no measuring.
-            double t0 = Math.Max(_motion[a].T, _motion[b].T);
+            ref Motion motionA = ref _motion[a], motionB = ref _motion[b];
+            double t0 = Math.Max(motionA.T, motionB.T);
             Vector3D d, relative;
             if (_noGravity)
             {
                 // The same in double precision (see Precision in ImpactStepper.cs).
-                Vector3D chordA = new(_motion[a].Chord), chordB = new(_motion[b].Chord);
+                Vector3D chordA = new(motionA.Chord), chordB = new(motionB.Chord);
                 relative = chordA - chordB;
-                d = _motion[a].PreciseX + (t0 - _motion[a].T) * chordA - (_motion[b].PreciseX + (t0 - _motion[b].T) * chordB);
+                d = motionA.PreciseX + (t0 - motionA.T) * chordA - (motionB.PreciseX + (t0 - motionB.T) * chordB);
                 if (relative.LengthSquared == 0 || Vector3D.Dot(d, relative) >= 0)
                 {
                     return;
@@ -109,14 +111,15 @@ internal sealed partial class ImpactStepper
             }
             else
             {
-                Vector3 relativeF = _motion[a].Chord - _motion[b].Chord;
-                if (relativeF == Vector3.Zero)
-                {
-                    return;
-                }
-
-                Vector3 dF = _motion[a].X + _motion[a].Chord * (float)(t0 - _motion[a].T) - (_motion[b].X + _motion[b].Chord * (float)(t0 - _motion[b].T));
-                if (Vector3.Dot(dF, relativeF) >= 0 || RestsThroughSubstep(a, b, dF, relativeF) || OutOfReach(a, b, dF, relativeF))
+                // A pair whose chords are alike (relative chord zero) has d · v = 0 and is let go by the first test.
+                // The three tests are all taken, without short cuts (& rather than &&): in a resting pile each passes
+                // about as often as it fails, which a branch per test would mispredict, and none costs much.
+                Vector3 relativeF = motionA.Chord - motionB.Chord;
+                Vector3 dF = motionA.X + motionA.Chord * (float)(t0 - motionA.T) - (motionB.X + motionB.Chord * (float)(t0 - motionB.T));
+                bool approaches = Vector3.Dot(dF, relativeF) < 0;
+                if (!(approaches
+                    & !RestsThroughSubstep(motionA, motionB, _held[a] | _held[b], dF, relativeF)
+                    & !OutOfReach(motionA, motionB, dF, relativeF)))
                 {
                     return;
                 }
@@ -138,23 +141,20 @@ internal sealed partial class ImpactStepper
     /// Whether a resting pair certainly stays short of its depth limit for the whole substep, decided without working
     /// the limit out: most contacts of a pile at rest that approach at all. It holds for a pair of which neither body has
     /// collided yet in the substep (so <paramref name="d"/>, the centres' offset now, is the one at the substep's start,
-    /// and both move along their first chords), a body of which is held by resting contacts, that is deeper than
-    /// <see cref="HeldDepthTolerance"/> of the smaller radius, and whose relative chord <paramref name="relative"/> moves
-    /// the centres by less than half that tolerance in the substep. Its limit is then its depth plus the tolerance (see
-    /// DepthLimit), and its depth grows by no more than the centres move. Under gravity only: without it the pair is
-    /// measured in double precision and its limit may be capped (see DepthCap).
+    /// and both move along their first chords), a body of which is held by resting contacts (<paramref name="held"/>),
+    /// that is deeper than <see cref="HeldDepthTolerance"/> of the smaller radius, and whose relative chord
+    /// <paramref name="relative"/> moves the centres by less than half that tolerance in the substep. Its limit is then
+    /// its depth plus the tolerance (see DepthLimit), and its depth grows by no more than the centres move. Under gravity
+    /// only: without it the pair is measured in double precision and its limit may be capped (see DepthCap).
     /// </summary>
-    private bool RestsThroughSubstep(int a, int b, Vector3 d, Vector3 relative)
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // see Predict: taken without branches
+    private bool RestsThroughSubstep(in Motion a, in Motion b, bool held, Vector3 d, Vector3 relative)
     {
-        if (_motion[a].Version != 0 || _motion[b].Version != 0 || !(_held[a] || _held[b]))
-        {
-            return false;
-        }
-
-        float tolerance = HeldDepthTolerance * SmallerRadius(a, b);
+        float tolerance = HeldDepthTolerance * MathF.Min(a.Radius, b.Radius);
         float travel = (float)_h * (float)_h * relative.LengthSquared();
-        float deepEnough = _motion[a].Radius + _motion[b].Radius - tolerance;
-        return travel < 0.25f * tolerance * tolerance && deepEnough > 0 && d.LengthSquared() < deepEnough * deepEnough;
+        float deepEnough = a.Radius + b.Radius - tolerance;
+        return ((a.Version | b.Version) == 0) & held
+            & (travel < 0.25f * tolerance * tolerance) & (deepEnough > 0) & (d.LengthSquared() < deepEnough * deepEnough);
     }
 
     /// <summary>
@@ -165,9 +165,10 @@ internal sealed partial class ImpactStepper
     /// reached the limit in the settled 4,000-disc pit. Under gravity only, as <see cref="RestsThroughSubstep"/>;
     /// the margin (1e-5 of the squared reach) keeps float rounding on the side of measuring.
     /// </summary>
-    private bool OutOfReach(int a, int b, Vector3 d, Vector3 relative)
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // see Predict: taken without branches
+    private bool OutOfReach(in Motion a, in Motion b, Vector3 d, Vector3 relative)
     {
-        float reach = _motion[a].Radius + _motion[b].Radius + (float)_h * relative.Length();
+        float reach = a.Radius + b.Radius + (float)_h * relative.Length();
         return d.LengthSquared() > reach * reach * (1f + 1e-5f);
     }
 
