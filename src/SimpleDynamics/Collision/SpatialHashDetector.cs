@@ -25,15 +25,19 @@ namespace SimpleDynamics.Collision;
 /// <para><b>Exactly once.</b> A pair is reported only in the cell that holds the minimum corner of the
 /// intersection of the two bounding boxes, the one cell both bodies are certain to share; so no pair is found
 /// twice and no set of seen pairs is needed.</para>
-/// <para><b>Cell size</b> is twice the mean radius, chosen anew every step; along an axis the whole world spans no
-/// more than two cells of, there is one layer (a 2-D world in z = 0 would otherwise straddle two). A body that would
-/// cover more than <see cref="MaxCellsPerBody"/> cells (a huge ground disc, say) is kept out of the grid and tested
-/// against every body instead.</para>
+/// <para><b>Cell size</b> is twice the mean radius of the grid's spheres (each body's reach grown by a skin), chosen
+/// anew at each build; along an axis the whole world spans no more than two cells of, there is one layer (a 2-D world
+/// in z = 0 would otherwise straddle two). A body that would cover more than <see cref="MaxCellsPerBody"/> cells (a
+/// huge ground disc, say) is kept out of the grid and tested against every body instead.</para>
+/// <para><b>Kept pairs.</b> The pairs whose grown spheres meet are kept, and a later call in which every body still
+/// lies inside its grown sphere tests only those instead of building the grid (a Verlet neighbour list, see
+/// SpatialHashDetector.KeptPairs.cs): a resting pile keeps them step after step. Either way the same contacts are
+/// reported.</para>
 /// <para>All working arrays are kept and reused: once warm, a step allocates nothing. They shrink when asked
 /// (<see cref="TrimExcess"/>) or once calls have long needed far less than they hold (120 calls using less than a
 /// quarter: see <see cref="World.TrimExcess"/>).</para>
 /// </remarks>
-public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
+public sealed partial class SpatialHashDetector : ICollisionDetector, ITrimmable
 {
     /// <summary>A body covering more cells than this is tested directly against all others.</summary>
     public const int MaxCellsPerBody = 64;
@@ -49,6 +53,7 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
     private int[] _bucketStart = new int[InitialBuckets + 1];
     private int[] _oversized = new int[InitialOversized];
     private int _oversizedCount;
+    private int _entriesReserved, _bucketStartsReserved; // by the last call that built the grid (PrepareBuckets)
     private bool _dense; // whether this call numbers cells as a dense grid (PrepareBuckets)
     private Cell _gridLow; // the dense grid's first cell, and its size in cells along x and y
     private int _gridColumns, _gridRows;
@@ -70,23 +75,35 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
         int n = bodies.Length;
         if (n < 2)
         {
+            ForgetKeptPairs();
             ShrinkIfIdle(0, 0, 0);
             return;
         }
 
-        Vector3 inverseCellSize = GatherBounds(bodies, 0.5f * margin, lookahead, out Vector3 lowest, out Vector3 highest);
-        int entryCount = LastEntryCount = CountEntries(n, inverseCellSize);
-        int lastBucket = PrepareBuckets(entryCount, inverseCellSize, lowest, highest);
+        Vector3 inverseCellSize = GatherBounds(bodies, 0.5f * margin, lookahead, out Vector3 lowest, out Vector3 highest, out bool keptPairsHold);
+        LastCallKeptPairs = keptPairsHold;
+        if (keptPairsHold)
+        {
+            FindKeptPairs(bodies, collisions, margin, lookahead); // see SpatialHashDetector.KeptPairs.cs
+            FindPairsWithOversized(bodies, collisions, margin, lookahead);
+            ShrinkIfIdle(n, _entriesReserved, _bucketStartsReserved); // the grid's arrays as the call that built it used them
+            return;
+        }
+
+        int entryCount = LastEntryCount = CountEntries(n, inverseCellSize, out int mostEntries);
+        int lastBucket = PrepareBuckets(entryCount, mostEntries, inverseCellSize, lowest, highest);
         FillBuckets(n, lastBucket);
+        BeginKeeping();
         FindPairsInBuckets(bodies, lastBucket, collisions, margin, lookahead);
         FindPairsWithOversized(bodies, collisions, margin, lookahead);
-        ShrinkIfIdle(n, entryCount, lastBucket + 2);
+        EndKeeping(n);
+        ShrinkIfIdle(n, _entriesReserved, _bucketStartsReserved);
     }
 
     /// <summary>
-    /// Releases the spare room of the working arrays. They hold nothing from one call to the next and are shared by
-    /// every world the detector serves, so all of it goes, whichever <paramref name="world"/> asks.
-    /// <see cref="World.TrimExcess"/> calls it.
+    /// Releases the spare room of the working arrays, and forgets the kept pairs (the next call builds the grid). The
+    /// arrays are shared by every world the detector serves, and the kept pairs only save work, so all of it goes,
+    /// whichever <paramref name="world"/> asks. <see cref="World.TrimExcess"/> calls it.
     /// </summary>
     /// <exception cref="ArgumentNullException"><paramref name="world"/> is null.</exception>
     public void TrimExcess(World world)
@@ -96,6 +113,9 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
         Buffers.ShrinkTo(ref _entries, InitialBodies, 0);
         Buffers.ShrinkTo(ref _bucketStart, InitialBuckets + 1, 0);
         Buffers.ShrinkTo(ref _oversized, InitialOversized, 0);
+        ForgetKeptPairs();
+        Buffers.ShrinkTo(ref _keptSpheres, InitialBodies, 0);
+        Buffers.ShrinkTo(ref _keptPairs, InitialBodies, 0);
     }
 
     /// <summary>Applies the <see cref="ShrinkPolicy"/> after each call, one call being one step of a world.</summary>
@@ -105,22 +125,28 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
         Buffers.ShrinkIfIdle(ref _entries, entries, ref _entryRoom, InitialBodies);
         Buffers.ShrinkIfIdle(ref _bucketStart, bucketStarts, ref _bucketRoom, InitialBuckets + 1);
         Buffers.ShrinkIfIdle(ref _oversized, _oversizedCount, ref _oversizedRoom, InitialOversized);
+        Buffers.ShrinkIfIdle(ref _keptSpheres, Math.Max(_keptSphereCount, 0), ref _keptSphereRoom, InitialBodies);
+        Buffers.ShrinkIfIdle(ref _keptPairs, _keptPairCount, ref _keptPairRoom, InitialBodies);
     }
 
     /// <summary>
-    /// Copies centres and radii, each radius grown by half the margin and by the distance the body travels in
-    /// the lookahead, so that every pair the exact test may accept shares a cell. Returns the inverse cell size
-    /// along each axis: 0 along an axis the bodies' boxes span no more than two cells of (all of them share one
-    /// layer of cells there), so that a flat world, a 2-D one in the plane z = 0 above all, is not entered
-    /// twice, once in each of two layers that its boxes straddle. <paramref name="lowest"/> and
-    /// <paramref name="highest"/> are the corners of the box around every body's sphere.
+    /// Copies centres and reaches, each radius grown by half the margin and by the distance the body travels in
+    /// the lookahead, so that every pair the exact test may accept has meeting spheres; the grid is laid over those
+    /// spheres grown by the skin (see SpatialHashDetector.KeptPairs.cs), so that the pairs whose grown spheres meet
+    /// share a cell. Returns the inverse cell size along each axis: 0 along an axis the bodies' boxes span no more
+    /// than two cells of (all of them share one layer of cells there), so that a flat world, a 2-D one in the plane
+    /// z = 0 above all, is not entered twice, once in each of two layers that its boxes straddle.
+    /// <paramref name="lowest"/> and <paramref name="highest"/> are the corners of the box around every body's grown
+    /// sphere. <paramref name="keptPairsHold"/> tells whether the pairs kept from an earlier call still hold every
+    /// pair whose spheres meet now (see <see cref="StillInside"/>).
     /// </summary>
-    private Vector3 GatherBounds(ReadOnlySpan<RigidBody> bodies, float halfMargin, float lookahead, out Vector3 lowest, out Vector3 highest)
+    private Vector3 GatherBounds(ReadOnlySpan<RigidBody> bodies, float halfMargin, float lookahead, out Vector3 lowest, out Vector3 highest, out bool keptPairsHold)
     {
         Buffers.EnsureCapacity(ref _bounds, bodies.Length);
         double radiusSum = 0;
         var low = new Vector3(float.PositiveInfinity);
         var high = new Vector3(float.NegativeInfinity);
+        bool hold = bodies.Length == _keptSphereCount;
         for (int i = 0; i < bodies.Length; i++)
         {
             RigidBody body = bodies[i];
@@ -130,11 +156,15 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
             // Grown by a rounding allowance, so that pairs that touch to within float rounding share a cell.
             Vector3 c = ContactGeometry.Unchecked.PathMiddle(body, lookahead);
             reach += 1e-6f * (MathF.Abs(c.X) + MathF.Abs(c.Y) + MathF.Abs(c.Z) + reach);
-            _bounds[i] = new Bounds { Centre = c, Radius = reach, Speed = speed };
-            radiusSum += reach;
-            low = Vector3.Min(low, c - new Vector3(reach));
-            high = Vector3.Max(high, c + new Vector3(reach));
+            float grown = (1f + Skin) * reach;
+            _bounds[i] = new Bounds { Centre = c, Reach = reach, Radius = grown, Speed = speed };
+            hold = hold && StillInside(i, c, reach);
+            radiusSum += grown;
+            low = Vector3.Min(low, c - new Vector3(grown));
+            high = Vector3.Max(high, c + new Vector3(grown));
         }
+
+        keptPairsHold = hold;
 
         lowest = low;
         highest = high;
@@ -148,11 +178,16 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
             extent.Z <= 2 * cellSize ? 0f : inverse);
     }
 
-    /// <summary>Computes each body's cell range; counts grid entries and sets oversized bodies aside.</summary>
-    private int CountEntries(int n, Vector3 inverseCellSize)
+    /// <summary>
+    /// Computes each body's cell range; counts grid entries and sets oversized bodies aside.
+    /// <paramref name="mostEntries"/> is the most entries the same boxes could make wherever they lay: a box of width w
+    /// covers at most ⌈w / cell⌉ + 1 cells along an axis.
+    /// </summary>
+    private int CountEntries(int n, Vector3 inverseCellSize, out int mostEntries)
     {
         _oversizedCount = 0;
         int entries = 0;
+        long most = 0;
         for (int i = 0; i < n; i++)
         {
             ref Bounds b = ref _bounds[i];
@@ -170,24 +205,41 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
             {
                 b.Oversized = false;
                 entries += (int)cells;
+                most += MostCells(b.Radius, inverseCellSize.X) * MostCells(b.Radius, inverseCellSize.Y) * MostCells(b.Radius, inverseCellSize.Z);
             }
         }
 
+        mostEntries = (int)Math.Min(most, int.MaxValue / 4);
         return entries;
+    }
+
+    /// <summary>The most cells a box of half-width <paramref name="radius"/> can cover along an axis (1 along a flat one).</summary>
+    private static long MostCells(float radius, float inverseCellSize) =>
+        inverseCellSize == 0 ? 1 : (long)Math.Min(MathF.Ceiling(2 * radius * inverseCellSize) + 1, MaxCellsPerBody);
+
+    /// <summary>A power of two at least twice the entries: the hashed grid's buckets.</summary>
+    private static int BucketsFor(int entries)
+    {
+        int buckets = 16;
+        while (buckets < 2 * entries)
+        {
+            buckets <<= 1;
+        }
+
+        return buckets;
     }
 
     /// <summary>
     /// Chooses the buckets and clears their counts; returns the last bucket's number. Hashed, there are a power of two
     /// at least twice the entries, and the last bucket's number masks the hash; as a dense grid, one per cell of the
-    /// box around all bodies, when those are no more (see the remarks).
+    /// box around all bodies, when those are no more (see the remarks). The arrays get room for the most entries the
+    /// bodies' boxes could make (<paramref name="mostEntries"/>): builds are rare once pairs are kept
+    /// (SpatialHashDetector.KeptPairs.cs), and a later one over the same bodies shifted then finds room instead of
+    /// allocating.
     /// </summary>
-    private int PrepareBuckets(int entryCount, Vector3 inverseCellSize, Vector3 lowest, Vector3 highest)
+    private int PrepareBuckets(int entryCount, int mostEntries, Vector3 inverseCellSize, Vector3 lowest, Vector3 highest)
     {
-        int buckets = 16;
-        while (buckets < 2 * entryCount)
-        {
-            buckets <<= 1;
-        }
+        int buckets = BucketsFor(entryCount);
 
         Cell low = CellOf(lowest, inverseCellSize), high = CellOf(highest, inverseCellSize);
         long columns = high.X - low.X + 1L, rows = high.Y - low.Y + 1L, layers = high.Z - low.Z + 1L;
@@ -200,8 +252,10 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
             _gridRows = (int)rows;
         }
 
-        Buffers.EnsureCapacity(ref _entries, entryCount);
-        Buffers.EnsureCapacity(ref _bucketStart, buckets + 1);
+        _entriesReserved = Math.Max(entryCount, mostEntries);
+        _bucketStartsReserved = Math.Max(buckets, BucketsFor(mostEntries)) + 1; // a dense grid has no more cells than hashed buckets
+        Buffers.EnsureCapacity(ref _entries, _entriesReserved);
+        Buffers.EnsureCapacity(ref _bucketStart, _bucketStartsReserved);
         Array.Clear(_bucketStart, 0, buckets + 1);
         return buckets - 1;
     }
@@ -280,16 +334,14 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
                         continue; // this pair is reported in another cell (most pairs of a moving crowd share several)
                     }
 
-                    float reach = _bounds[i].Radius + _bounds[j].Radius;
-                    if (Vector3.DistanceSquared(_bounds[i].Centre, _bounds[j].Centre) >= reach * reach)
+                    float grown = _bounds[i].Radius + _bounds[j].Radius;
+                    if (Vector3.DistanceSquared(_bounds[i].Centre, _bounds[j].Centre) >= grown * grown)
                     {
-                        continue; // the spheres do not meet
+                        continue; // the grown spheres do not meet
                     }
 
-                    if (ContactGeometry.Unchecked.TryCollide(bodies[i], bodies[j], _bounds[i].Speed, _bounds[j].Speed, margin, lookahead, out Contact contact))
-                    {
-                        collisions.Add(contact);
-                    }
+                    KeepPair(i, j);
+                    TryPair(bodies, i, j, collisions, margin, lookahead);
                 }
             }
         }
@@ -341,10 +393,29 @@ public sealed class SpatialHashDetector : ICollisionDetector, ITrimmable
 
     private static int Hash(int x, int y, int z) => unchecked((x * 73856093) ^ (y * 19349663) ^ (z * 83492791));
 
+    /// <summary>
+    /// The exact test for a pair whose grown spheres meet: whether the spheres themselves meet, then
+    /// <see cref="ContactGeometry.TryCollide(RigidBody, RigidBody, float, float, out Contact)"/>.
+    /// </summary>
+    private void TryPair(ReadOnlySpan<RigidBody> bodies, int i, int j, CollisionData collisions, float margin, float lookahead)
+    {
+        float reach = _bounds[i].Reach + _bounds[j].Reach;
+        if (Vector3.DistanceSquared(_bounds[i].Centre, _bounds[j].Centre) >= reach * reach)
+        {
+            return; // the spheres do not meet
+        }
+
+        if (ContactGeometry.Unchecked.TryCollide(bodies[i], bodies[j], _bounds[i].Speed, _bounds[j].Speed, margin, lookahead, out Contact contact))
+        {
+            collisions.Add(contact);
+        }
+    }
+
     private struct Bounds
     {
         public Vector3 Centre;
-        public float Radius;
+        public float Reach; // the sphere around the middle of the body's path, as the exact test may accept it
+        public float Radius; // that grown by the skin: what the grid holds
         public float Speed; // |v|, for the exact test of a pair
         public Cell Min;
         public Cell Max;
