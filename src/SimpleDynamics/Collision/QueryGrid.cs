@@ -9,8 +9,8 @@ namespace SimpleDynamics.Collision;
 /// cell listing the bodies whose box touches it (compressed rows: one array of entries, one of cell starts).
 /// </summary>
 /// <remarks>
-/// Detection's own grid (<see cref="SpatialHashDetector"/>) is built from the positions at the start of a step,
-/// so after the step it is out of date; this one is built lazily by the world from the positions at the time
+/// Detection's own grid (<see cref="SpatialHashDetector"/>) is built from the positions at the start of a step (or
+/// of an earlier one, while its kept pairs hold), so after the step it is out of date; this one is built lazily by the world from the positions at the time
 /// of the first query after a step, and kept until the next step. Cells are about a body across, grown until
 /// there are no more than about two cells per body, so a ray walks few empty cells and a small box touches
 /// few cells. A body whose box spans more than <see cref="MaxCellsPerBody"/> cells is kept on a short list

@@ -9,14 +9,19 @@ namespace SimpleDynamics.Collision;
 /// Fluids. I.", <i>Physical Review</i> 159, 98–103, 1967, https://doi.org/10.1103/PhysRev.159.98).
 /// </summary>
 /// <remarks>
-/// <para>Each call builds the grid over every body's sphere grown by a skin (a quarter of its reach) and keeps the
+/// <para>A call that builds the grid lays it over every body's sphere grown by a skin (a quarter of its reach) and keeps the
 /// pairs whose grown spheres meet, by the bodies' places in the order, with each grown sphere as it was. A later call
 /// over as many bodies, in which the sphere of the body in each place still lies inside the grown sphere kept for that
 /// place, needs no grid: two spheres that meet now lie inside grown spheres that met then, so every pair that can be
 /// reported now is among those kept. Those pairs alone are tested, exactly as the grid's are (<see cref="TryPair"/>):
 /// the same contacts are reported, in the order of the call that kept them. A body added or removed, or one out of its
-/// place's grown sphere (moved far, a teleport, a fast body, a body that grew, another body in its place), makes the
-/// call build the grid again.</para>
+/// place's grown sphere (moved far, a teleport, a fast body, a body that grew), makes the call build the grid again;
+/// another body put in a place, inside its grown sphere, does not, and needs not.</para>
+/// <para><b>Rounding.</b> The spheres are compared in float. A body counts as inside only if it is so by 10⁻⁶ of its
+/// grown sphere's size and distance from the origin, about sixteen times the float rounding of the distances involved
+/// (of the centres' differences, then and now): so two spheres that meet by the float test now always met by the
+/// float test then. Far from the origin that allowance eats the skin (a body 250,000 reaches out can never stay
+/// inside), and such a world builds its grid at every call, as before pairs were kept.</para>
 /// <para>A settled pile moves by micrometres a step and keeps its pairs for as long as it rests: a step's detection is
 /// then a pass over the bodies and one over the kept pairs. A pile still landing outruns its skins in a step or two and
 /// pays for keeping the pairs at each build.</para>
@@ -29,8 +34,8 @@ public sealed partial class SpatialHashDetector
     /// <summary>
     /// How much the grid's spheres are grown beyond the reach the exact test may accept, as a fraction of it. A quarter
     /// keeps the nearest neighbours of a packed pile only (in a hexagonal packing of discs the next ring lies at 1.73
-    /// times the nearest), while a body may move by a quarter of its reach (its radius and half the margin, when at rest)
-    /// before the pairs are found again.
+    /// times the nearest), while a body may move by a quarter of its reach (its radius and half the margin, when at rest),
+    /// less the rounding allowance, before the pairs are found again.
     /// </summary>
     private const float Skin = 0.25f;
 
@@ -43,13 +48,9 @@ public sealed partial class SpatialHashDetector
     /// <summary>Whether the last call with two bodies or more tested the kept pairs instead of building the grid, for tests.</summary>
     internal bool LastCallKeptPairs { get; private set; }
 
-    /// <summary>The pairs kept by the last call that built the grid, for tests.</summary>
-    internal int KeptPairCount => _keptSphereCount < 0 ? 0 : _keptPairCount;
-
     /// <summary>
     /// Whether the sphere of <paramref name="reach"/> around <paramref name="centre"/> of the body in place
-    /// <paramref name="i"/> lies inside the grown sphere kept for that place, by an allowance (10⁻⁵ of the sphere's size
-    /// and distance from the origin) far beyond the float rounding of the distances compared (see the remarks).
+    /// <paramref name="i"/> lies inside the grown sphere kept for that place, by the rounding allowance (see the remarks).
     /// </summary>
     private bool StillInside(int i, Vector3 centre, float reach)
     {
@@ -64,7 +65,11 @@ public sealed partial class SpatialHashDetector
         _keptPairCount = 0;
     }
 
-    private void BeginKeeping() => _keptPairCount = 0;
+    /// <summary>
+    /// Forgets the kept pairs before a build refills them: a build cut short (a collision filter of the game's that
+    /// throws) must leave nothing that a later call could take for a whole list.
+    /// </summary>
+    private void BeginKeeping() => ForgetKeptPairs();
 
     /// <summary>Keeps a pair whose grown spheres meet (i &lt; j).</summary>
     private void KeepPair(int i, int j)
@@ -80,7 +85,7 @@ public sealed partial class SpatialHashDetector
         for (int i = 0; i < n; i++)
         {
             ref Bounds b = ref _bounds[i];
-            float allowance = 1e-5f * (MathF.Abs(b.Centre.X) + MathF.Abs(b.Centre.Y) + MathF.Abs(b.Centre.Z) + b.Radius);
+            float allowance = 1e-6f * (MathF.Abs(b.Centre.X) + MathF.Abs(b.Centre.Y) + MathF.Abs(b.Centre.Z) + b.Radius);
             _keptSpheres[i] = new KeptSphere { Centre = b.Centre, Limit = b.Radius - allowance };
         }
 

@@ -59,10 +59,10 @@ public sealed partial class SpatialHashDetector : ICollisionDetector, ITrimmable
     private int _gridColumns, _gridRows;
     private ShrinkPolicy _boundsRoom, _entryRoom, _bucketRoom, _oversizedRoom;
 
-    /// <summary>The (cell, body) entries of the grid in the last call with two bodies or more, for tests.</summary>
+    /// <summary>The (cell, body) entries of the grid the last call with two bodies or more built or kept pairs from, for tests.</summary>
     internal int LastEntryCount { get; private set; }
 
-    /// <summary>Whether the last call with two bodies or more used a dense grid (see the remarks), for tests.</summary>
+    /// <summary>Whether the grid the last call with two bodies or more built or kept pairs from was dense (see the remarks), for tests.</summary>
     internal bool LastUsedDenseGrid => _dense;
 
     /// <inheritdoc />
@@ -138,7 +138,8 @@ public sealed partial class SpatialHashDetector : ICollisionDetector, ITrimmable
     /// z = 0 above all, is not entered twice, once in each of two layers that its boxes straddle.
     /// <paramref name="lowest"/> and <paramref name="highest"/> are the corners of the box around every body's grown
     /// sphere. <paramref name="keptPairsHold"/> tells whether the pairs kept from an earlier call still hold every
-    /// pair whose spheres meet now (see <see cref="StillInside"/>).
+    /// pair of bodies in the grid whose spheres meet now (see <see cref="StillInside"/>; the bodies too large for the
+    /// grid are tested against all).
     /// </summary>
     private Vector3 GatherBounds(ReadOnlySpan<RigidBody> bodies, float halfMargin, float lookahead, out Vector3 lowest, out Vector3 highest, out bool keptPairsHold)
     {
@@ -180,8 +181,9 @@ public sealed partial class SpatialHashDetector : ICollisionDetector, ITrimmable
 
     /// <summary>
     /// Computes each body's cell range; counts grid entries and sets oversized bodies aside.
-    /// <paramref name="mostEntries"/> is the most entries the same boxes could make wherever they lay: a box of width w
-    /// covers at most ⌈w / cell⌉ + 1 cells along an axis.
+    /// <paramref name="mostEntries"/> is the most entries the same boxes could make at this cell size wherever they lay
+    /// (a box of width w covers at most ⌈w / cell⌉ + 1 cells along an axis, and a body in the grid at most
+    /// <see cref="MaxCellsPerBody"/>).
     /// </summary>
     private int CountEntries(int n, Vector3 inverseCellSize, out int mostEntries)
     {
@@ -205,7 +207,7 @@ public sealed partial class SpatialHashDetector : ICollisionDetector, ITrimmable
             {
                 b.Oversized = false;
                 entries += (int)cells;
-                most += MostCells(b.Radius, inverseCellSize.X) * MostCells(b.Radius, inverseCellSize.Y) * MostCells(b.Radius, inverseCellSize.Z);
+                most += Math.Min(MostCells(b.Radius, inverseCellSize.X) * MostCells(b.Radius, inverseCellSize.Y) * MostCells(b.Radius, inverseCellSize.Z), MaxCellsPerBody);
             }
         }
 
