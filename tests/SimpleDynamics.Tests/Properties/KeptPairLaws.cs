@@ -147,6 +147,39 @@ public class KeptPairLaws(ITestOutputHelper output)
         }
     }
 
+    /// <summary>
+    /// A game's collision filter that throws while the grid is being built leaves no half-kept pairs behind: the body
+    /// that made it throw is taken out again, every other body lies where it was, and the next steps detect as a fresh
+    /// detector does (a partial list trusted as whole would miss pairs, or read past the bodies).
+    /// </summary>
+    [Fact]
+    public void A_build_cut_short_by_a_throwing_filter_leaves_no_kept_pairs_behind()
+    {
+        World world = SimpleDynamics.Scenes.BallPit(200, planar: true);
+        world.SleepingEnabled = false;
+        for (int i = 0; i < 240; i++)
+        {
+            world.Step(1f / 60f);
+        }
+
+        var detector = (SpatialHashDetector)world.Detector;
+        Assert.True(detector.LastCallKeptPairs, "the settled pit keeps its pairs");
+        RigidBody intruder = world.Add(new RigidBody(1f, 0.1f, world.Bodies[100].Position + new Vector3(0.05f, 0, 0)));
+        world.ShouldCollide = (a, b) => a == intruder || b == intruder ? throw new InvalidOperationException("the game's filter failed") : true;
+        Assert.Throws<InvalidOperationException>(() => world.Step(1f / 60f));
+        world.ShouldCollide = null;
+        world.Remove(intruder);
+        for (int i = 0; i < 3; i++)
+        {
+            world.Step(1f / 60f); // would throw, or miss pairs, with the partial list kept
+            var expected = new CollisionData();
+            new SpatialHashDetector().FindContacts(world.Bodies.ToArray(), expected);
+            var found = new CollisionData();
+            detector.FindContacts(world.Bodies.ToArray(), found);
+            Assert.Equal(expected.Count, found.Count);
+        }
+    }
+
     /// <summary>A ball in a crowd about as wide as the balls' total width laid in a square (so most touch a few others).</summary>
     private static RigidBody NewBody(Random random, int count)
     {
