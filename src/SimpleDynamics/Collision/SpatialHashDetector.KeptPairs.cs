@@ -9,14 +9,15 @@ namespace SimpleDynamics.Collision;
 /// Fluids. I.", <i>Physical Review</i> 159, 98–103, 1967, https://doi.org/10.1103/PhysRev.159.98).
 /// </summary>
 /// <remarks>
-/// <para>A call that builds the grid lays it over every body's sphere grown by a skin (a quarter of its reach) and keeps the
-/// pairs whose grown spheres meet, by the bodies' places in the order, with each grown sphere as it was. A later call
-/// over as many bodies, in which the sphere of the body in each place still lies inside the grown sphere kept for that
-/// place, needs no grid: two spheres that meet now lie inside grown spheres that met then, so every pair that can be
-/// reported now is among those kept. Those pairs alone are tested, by the exact test the grid's pairs end with
-/// (<see cref="TryPair"/>): the same contacts are reported, in the order of the call that kept them. A body added or removed, or one out of its
-/// place's grown sphere (moved far, a teleport, a fast body, a body that grew), makes the call build the grid again;
-/// another body put in a place, inside its grown sphere, does not, and needs not.</para>
+/// <para>A call that builds the grid lays it over every body's sphere grown by a skin (a quarter of its reach) and keeps
+/// the pairs whose grown spheres meet, by the bodies' places in the order, with each grown sphere as it was. A later
+/// call over as many bodies, in which the sphere of the body in each place still lies inside the grown sphere kept for
+/// that place, needs no grid: two spheres that meet now lie inside grown spheres that met then, so every pair that can
+/// be reported now is among those kept. Those pairs alone are tested, by the exact test that the grid's pairs end with
+/// (<see cref="ContactGeometry.TryCollide(RigidBody, RigidBody, float, float, out Contact)"/>): the same contacts are
+/// reported, in the order of the call that kept them. A body added or removed, or one out of its place's grown sphere
+/// (moved far, a teleport, a fast body, a body that grew), makes the call build the grid again; another body put in a
+/// place, inside its grown sphere, does not, and needs not.</para>
 /// <para><b>Rounding.</b> The spheres are compared in float. A body counts as inside only if it is so by 10⁻⁶ of its
 /// grown sphere's size and distance from the origin, about sixteen times the float rounding of the distances involved
 /// (of the centres' differences, then and now): so two spheres that meet by the float test now always met by the
@@ -98,7 +99,7 @@ public sealed partial class SpatialHashDetector
     /// <summary>
     /// Tests the kept pairs, in the order they were found, by the exact test alone: the grid's test of the spheres
     /// before it, which the exact test repeats, is left out, since in a resting pile nearly every kept pair passes it
-    /// (the settled 2-D pits stepped 3 % faster without it, the 3-D pit alike). The bodies too large for the grid when
+    /// (the settled 2-D pits stepped 3 % faster without it, the 3-D pit no slower). The bodies too large for the grid when
     /// it was built are marked so again, for <see cref="FindPairsWithOversized"/> to test against every other.
     /// </summary>
     private void FindKeptPairs(ReadOnlySpan<RigidBody> bodies, CollisionData collisions, float margin, float lookahead)
