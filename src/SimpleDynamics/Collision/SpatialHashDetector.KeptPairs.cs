@@ -66,12 +66,6 @@ public sealed partial class SpatialHashDetector
         _keptPairCount = 0;
     }
 
-    /// <summary>
-    /// Forgets the kept pairs before a build refills them: a build cut short (a collision filter of the game's that
-    /// throws) must leave nothing that a later call could take for a whole list.
-    /// </summary>
-    private void BeginKeeping() => ForgetKeptPairs();
-
     /// <summary>Keeps a pair whose grown spheres meet (i &lt; j).</summary>
     private void KeepPair(int i, int j)
     {
@@ -111,11 +105,7 @@ public sealed partial class SpatialHashDetector
 
         foreach (KeptPair pair in _keptPairs.AsSpan(0, _keptPairCount))
         {
-            int i = pair.First, j = pair.Second;
-            if (ContactGeometry.Unchecked.TryCollide(bodies[i], bodies[j], _bounds[i].Speed, _bounds[j].Speed, margin, lookahead, out Contact contact))
-            {
-                collisions.Add(contact);
-            }
+            Collide(bodies, pair.First, pair.Second, collisions, margin, lookahead);
         }
     }
 

@@ -93,7 +93,9 @@ public sealed partial class SpatialHashDetector : ICollisionDetector, ITrimmable
         int entryCount = LastEntryCount = CountEntries(n, inverseCellSize, out int mostEntries);
         int lastBucket = PrepareBuckets(entryCount, mostEntries, inverseCellSize, lowest, highest);
         FillBuckets(n, lastBucket);
-        BeginKeeping();
+        // The kept pairs are forgotten before the build refills them: a build cut short (a game's collision filter that
+        // throws) then leaves no partial list that a later call could trust.
+        ForgetKeptPairs();
         FindPairsInBuckets(bodies, lastBucket, collisions, margin, lookahead);
         FindPairsWithOversized(bodies, collisions, margin, lookahead);
         EndKeeping(n);
@@ -402,11 +404,15 @@ public sealed partial class SpatialHashDetector : ICollisionDetector, ITrimmable
     private void TryPair(ReadOnlySpan<RigidBody> bodies, int i, int j, CollisionData collisions, float margin, float lookahead)
     {
         float reach = _bounds[i].Reach + _bounds[j].Reach;
-        if (Vector3.DistanceSquared(_bounds[i].Centre, _bounds[j].Centre) >= reach * reach)
+        if (Vector3.DistanceSquared(_bounds[i].Centre, _bounds[j].Centre) < reach * reach) // else the spheres do not meet
         {
-            return; // the spheres do not meet
+            Collide(bodies, i, j, collisions, margin, lookahead);
         }
+    }
 
+    /// <summary>The exact test of a pair (i &lt; j), adding its contact if it passes.</summary>
+    private void Collide(ReadOnlySpan<RigidBody> bodies, int i, int j, CollisionData collisions, float margin, float lookahead)
+    {
         if (ContactGeometry.Unchecked.TryCollide(bodies[i], bodies[j], _bounds[i].Speed, _bounds[j].Speed, margin, lookahead, out Contact contact))
         {
             collisions.Add(contact);
