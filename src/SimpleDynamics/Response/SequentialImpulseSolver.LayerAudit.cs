@@ -151,8 +151,8 @@ public sealed partial class SequentialImpulseSolver
             for (int i = 0; i < solver._activeCount; i++)
             {
                 ref ContactConstraint c = ref solver._constraints[solver._active[i]];
-                ref VelocityState a = ref solver._bodies[c.A];
-                ref VelocityState b = ref solver._bodies[c.B];
+                ref SolverBody a = ref solver._bodies[c.A];
+                ref SolverBody b = ref solver._bodies[c.B];
                 float impulse = Impulse(solver, i);
                 if (impulse <= 0 || (a.InverseMass == 0 && b.InverseMass == 0))
                 {
@@ -174,7 +174,7 @@ public sealed partial class SequentialImpulseSolver
             int slots = solver._step!.Bodies.Length + 1;
             for (int s = 1; s < slots; s++)
             {
-                ref VelocityState body = ref solver._bodies[s];
+                ref SolverBody body = ref solver._bodies[s];
                 if (body.InverseMass > 0)
                 {
                     var velocity = new Vector3D(body.Linear);

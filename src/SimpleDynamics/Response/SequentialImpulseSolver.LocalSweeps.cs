@@ -120,7 +120,7 @@ public sealed partial class SequentialImpulseSolver
     /// <summary>Whether the body in <paramref name="slot"/> has changed by more than the drift allowed since its velocity was last published.</summary>
     private bool Drifted(int slot, float drift2)
     {
-        ref VelocityState body = ref _bodies[slot];
+        ref SolverBody body = ref _bodies[slot];
         float radius = _radii[slot];
         return Vector3.DistanceSquared(body.Linear, _publishedLinear[slot]) +
             radius * radius * Vector3.DistanceSquared(body.Angular, _publishedAngular[slot]) > drift2;

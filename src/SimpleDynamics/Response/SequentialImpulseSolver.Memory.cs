@@ -58,6 +58,7 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         Buffers.ShrinkTo(ref _positions, capacity, 0);
         Buffers.ShrinkTo(ref _radii, capacity, 0);
         Buffers.ShrinkTo(ref _inertiaScalars, capacity, 0);
+        Buffers.ShrinkTo(ref _inverseInertias, capacity, 0);
         Buffers.ShrinkTo(ref _bodyOrder, capacity, 0);
         Buffers.ShrinkTo(ref _publishedLinear, capacity, 0);
         Buffers.ShrinkTo(ref _publishedAngular, capacity, 0);

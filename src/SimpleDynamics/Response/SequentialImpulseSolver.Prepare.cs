@@ -10,7 +10,8 @@ namespace SimpleDynamics.Response;
 public sealed partial class SequentialImpulseSolver
 {
     private readonly HeightOrder _heightOrder = new();
-    private VelocityState[] _bodies = new VelocityState[InitialCapacity];
+    private SolverBody[] _bodies = new SolverBody[InitialCapacity];
+    private Matrix3[] _inverseInertias = new Matrix3[InitialCapacity]; // per slot, world I⁻¹, copied only where it is not k·1 (_inertiaScalars NaN)
     private Vector3[] _positions = new Vector3[InitialCapacity];
     private ContactConstraint[] _constraints = new ContactConstraint[InitialCapacity];
     private int[] _order = new int[InitialCapacity];
@@ -50,6 +51,7 @@ public sealed partial class SequentialImpulseSolver
         Buffers.EnsureCapacity(ref _bodyHeights, n);
         Buffers.EnsureCapacity(ref _radii, n + 1);
         Buffers.EnsureCapacity(ref _inertiaScalars, n + 1);
+        Buffers.EnsureCapacity(ref _inverseInertias, n + 1);
         for (int i = 0; i < n; i++)
         {
             _bodyHeights[i] = -Vector3.Dot(bodies[i].position, gravity);
@@ -110,6 +112,7 @@ public sealed partial class SequentialImpulseSolver
         Buffers.EnsureCapacity(ref _slotOf, n);
         Buffers.EnsureCapacity(ref _radii, n + 1);
         Buffers.EnsureCapacity(ref _inertiaScalars, n + 1);
+        Buffers.EnsureCapacity(ref _inverseInertias, n + 1);
         for (int i = _gatheredBodies; i < n; i++)
         {
             _slotOf[i] = i + 1; // the slots of the bodies gathered at the start of the step are 1 … _gatheredBodies
@@ -157,14 +160,20 @@ public sealed partial class SequentialImpulseSolver
         return true;
     }
 
-    /// <summary>Copies velocities, masses, world inverse inertia and positions as they are at the start of a substep.</summary>
+    /// <summary>Copies velocities, masses, positions and (where it turns with the body) the world inverse inertia as they are at the start of a substep.</summary>
     private void GatherState(ReadOnlySpan<RigidBody> bodies)
     {
         for (int i = 0; i < bodies.Length; i++)
         {
             int slot = _slotOf[i];
-            _bodies[slot] = VelocityState.Of(bodies[i]);
-            _positions[slot] = bodies[i].position;
+            RigidBody body = bodies[i];
+            _bodies[slot] = new SolverBody { Linear = body.linearVelocity, Angular = body.angularVelocity, InverseMass = body.inverseMass };
+            _positions[slot] = body.position;
+            if (float.IsNaN(_inertiaScalars[slot]))
+            {
+                _inverseInertias[slot] = body.inverseInertiaWorld; // it turns with the body; k·1 does not
+            }
+
             if (_strips.Count > 1 && !bodies[i].IsDynamic)
             {
                 // −0 as +0: the sweeps add ±0 to what nothing moves, which turns −0 into +0 or not by the order of the
@@ -179,7 +188,14 @@ public sealed partial class SequentialImpulseSolver
     {
         for (int i = 0; i < bodies.Length; i++)
         {
-            _bodies[_slotOf[i]].StoreTo(bodies[i]);
+            RigidBody body = bodies[i];
+            if (body.IsDynamic)
+            {
+                // Infinite-mass bodies keep their velocities.
+                ref SolverBody state = ref _bodies[_slotOf[i]];
+                body.linearVelocity = state.Linear;
+                body.angularVelocity = state.Angular;
+            }
         }
     }
 
@@ -321,8 +337,8 @@ public sealed partial class SequentialImpulseSolver
         for (int k = 0; k < contacts.Length; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
-            ref VelocityState a = ref _bodies[c.A];
-            ref VelocityState b = ref _bodies[c.B];
+            ref SolverBody a = ref _bodies[c.A];
+            ref SolverBody b = ref _bodies[c.B];
             Vector3 positionA = _positions[c.A];
             float penetration;
             if (noGravity)
@@ -368,8 +384,8 @@ public sealed partial class SequentialImpulseSolver
             {
                 c.Tangent1 = new Vector3(c.Normal.Y, -c.Normal.X, 0);
                 c.Tangent2 = Vector3.Zero;
-                c.SpinA1 = new Vector3(0, 0, c.RhoA * a.InverseInertia.M33);
-                c.SpinB1 = new Vector3(0, 0, -c.RhoB * b.InverseInertia.M33);
+                c.SpinA1 = new Vector3(0, 0, c.RhoA * InverseInertiaZ(c.A));
+                c.SpinB1 = new Vector3(0, 0, -c.RhoB * InverseInertiaZ(c.B));
                 c.SpinA2 = c.SpinB2 = Vector3.Zero;
                 c.TangentMass1 = InverseOrZero(inverseMassSum + c.RhoA * c.SpinA1.Z - c.RhoB * c.SpinB1.Z);
                 c.TangentMass2 = c.FrictionImpulse2 = 0;
@@ -389,10 +405,10 @@ public sealed partial class SequentialImpulseSolver
                 }
                 else
                 {
-                    c.SpinA1 = -c.RhoA * a.InverseInertia.Transform(c.Tangent2);
-                    c.SpinB1 = c.RhoB * b.InverseInertia.Transform(c.Tangent2);
-                    c.SpinA2 = c.RhoA * a.InverseInertia.Transform(c.Tangent1);
-                    c.SpinB2 = -c.RhoB * b.InverseInertia.Transform(c.Tangent1);
+                    c.SpinA1 = -c.RhoA * _inverseInertias[c.A].Transform(c.Tangent2);
+                    c.SpinB1 = c.RhoB * _inverseInertias[c.B].Transform(c.Tangent2);
+                    c.SpinA2 = c.RhoA * _inverseInertias[c.A].Transform(c.Tangent1);
+                    c.SpinB2 = -c.RhoB * _inverseInertias[c.B].Transform(c.Tangent1);
                     c.TangentMass1 = InverseOrZero(inverseMassSum + Vector3.Dot(c.RhoB * c.SpinB1 - c.RhoA * c.SpinA1, c.Tangent2));
                     c.TangentMass2 = InverseOrZero(inverseMassSum + Vector3.Dot(c.RhoA * c.SpinA2 - c.RhoB * c.SpinB2, c.Tangent1));
                 }
@@ -417,6 +433,13 @@ public sealed partial class SequentialImpulseSolver
         }
 
         return true;
+    }
+
+    /// <summary>(I⁻¹)_zz of the body in a slot, world frame: what a torque along z does to its spin along z.</summary>
+    private float InverseInertiaZ(int slot)
+    {
+        float k = _inertiaScalars[slot];
+        return float.IsNaN(k) ? _inverseInertias[slot].M33 : k;
     }
 
     private int SlotOf(RigidBody body) => body.index < 0 ? 0 : _slotOf[body.index]; // the ground (index −1) is slot 0

@@ -158,8 +158,8 @@ public sealed partial class SequentialImpulseSolver
     /// </remarks>
     private void SolveContact(ref ContactConstraint c)
     {
-        ref VelocityState a = ref _bodies[c.A];
-        ref VelocityState b = ref _bodies[c.B];
+        ref SolverBody a = ref _bodies[c.A];
+        ref SolverBody b = ref _bodies[c.B];
         Vector3 linear = a.Linear - b.Linear;
         float oldNormal = c.NormalImpulse;
         float normal = c.NormalImpulse = MathF.Max(oldNormal - c.NormalMass * Vector3.Dot(linear, c.Normal), 0f);
@@ -207,8 +207,8 @@ public sealed partial class SequentialImpulseSolver
     [MethodImpl(MethodImplOptions.AggressiveInlining)] // in the sweeps' inner loop
     private void Apply(ref ContactConstraint c, float normal, float tangent1, float tangent2)
     {
-        ref VelocityState a = ref _bodies[c.A];
-        ref VelocityState b = ref _bodies[c.B];
+        ref SolverBody a = ref _bodies[c.A];
+        ref SolverBody b = ref _bodies[c.B];
         Vector3 impulse = normal * c.Normal + tangent1 * c.Tangent1 + tangent2 * c.Tangent2;
         a.Linear += impulse * a.InverseMass;
         a.Angular += tangent1 * c.SpinA1 + tangent2 * c.SpinA2;
@@ -251,8 +251,8 @@ public sealed partial class SequentialImpulseSolver
             return 0;
         }
 
-        ref VelocityState a = ref _bodies[c.A];
-        ref VelocityState b = ref _bodies[c.B];
+        ref SolverBody a = ref _bodies[c.A];
+        ref SolverBody b = ref _bodies[c.B];
         float normalVelocity = Vector3.Dot(a.Linear - b.Linear, c.Normal); // r × n = 0: the spins add nothing along n
         if (normalVelocity >= 0)
         {

@@ -6,8 +6,9 @@ namespace SimpleDynamics.Response;
 
 /// <summary>
 /// What an impulse needs of one body: its velocities and its inverse mass and world inverse inertia. The
-/// single-pair responders load it from a <see cref="RigidBody"/>; the iterative solver keeps an array of them,
-/// contiguous, for the whole world. Infinite-mass bodies have zero inverses, so impulses leave them alone.
+/// single-pair responders (and the solver's answer at an impact) load it from a <see cref="RigidBody"/>; the
+/// solver's sweeps keep the smaller <see cref="SolverBody"/> for the whole world. Infinite-mass bodies have zero
+/// inverses, so impulses leave them alone.
 /// </summary>
 internal struct VelocityState
 {
