@@ -44,6 +44,13 @@ public class PlanarPathTests
                 Assert.Equal(0f, a[i].Position.Z);
                 Assert.Equal(0f, a[i].AngularVelocity.X);
                 Assert.Equal(0f, a[i].AngularVelocity.Y);
+
+                // On the general path too, contacts whose normals lie in the plane keep their discs in it: their
+                // tangents are t1 in the plane and t2 = ∓z exactly, so friction pushes nothing out of it.
+                Assert.Equal(0f, b[i].Position.Z);
+                Assert.Equal(0f, b[i].LinearVelocity.Z);
+                Assert.Equal(0f, b[i].AngularVelocity.X);
+                Assert.Equal(0f, b[i].AngularVelocity.Y);
             }
         }
 
