@@ -164,10 +164,10 @@ public sealed partial class SequentialImpulseSolver
         if (c.IsPlaneContact)
         {
             normal = c.Normal;
-            return ContactGeometry.Unchecked.PlanePenetration(_positions[c.A], c.RadiusA, normal, c.PlaneOffset);
+            return ContactGeometry.Unchecked.PlanePenetration(_positions[c.A], _radii[c.A], normal, c.PlaneOffset);
         }
 
-        return ContactGeometry.Unchecked.CirclePenetration(_positions[c.A], c.RadiusA, _positions[c.B], c.RadiusB, out normal);
+        return ContactGeometry.Unchecked.CirclePenetration(_positions[c.A], _radii[c.A], _positions[c.B], _radii[c.B], out normal);
     }
 
     /// <summary>Removes the contact's depth beyond the slop by moving one body along the normal (n points from B to A).</summary>

@@ -173,7 +173,7 @@ public sealed partial class SequentialImpulseSolver
             float height = ContactHeight(ref c, up);
             lowest = MathF.Min(lowest, height);
             highest = MathF.Max(highest, height);
-            largestRadius = MathF.Max(largestRadius, MathF.Max(c.RadiusA, c.RadiusB));
+            largestRadius = MathF.Max(largestRadius, MathF.Max(_radii[c.A], _radii[c.B]));
         }
 
         float bandHeight = MathF.Max(BandDiameters * _meanDiameter, 2.5f * largestRadius);

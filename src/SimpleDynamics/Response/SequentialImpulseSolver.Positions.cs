@@ -277,7 +277,7 @@ public sealed partial class SequentialImpulseSolver
             return false;
         }
 
-        float reach = c.RadiusA + c.RadiusB - _slop;
+        float reach = _radii[c.A] + _radii[c.B] - _slop;
         return reach > 0 && Vector3.DistanceSquared(_positions[c.A], _positions[c.B]) > reach * reach * (1f + 1e-5f);
     }
 

@@ -14,6 +14,7 @@ public sealed partial class SequentialImpulseSolver
     private Matrix3[] _inverseInertias = new Matrix3[InitialCapacity]; // per slot, world I⁻¹, copied only where it is not k·1 (_inertiaScalars NaN)
     private Vector3[] _positions = new Vector3[InitialCapacity];
     private ContactConstraint[] _constraints = new ContactConstraint[InitialCapacity];
+    private ContactStepImpulses[] _stepImpulses = new ContactStepImpulses[InitialCapacity]; // per constraint
     private int[] _order = new int[InitialCapacity];
     private int[] _bodyOrder = new int[InitialCapacity];
     private int[] _slotOf = new int[InitialCapacity];
@@ -274,22 +275,22 @@ public sealed partial class SequentialImpulseSolver
     private void PrepareConstraints(Span<Contact> contacts)
     {
         Buffers.EnsureCapacity(ref _constraints, contacts.Length);
+        Buffers.EnsureCapacity(ref _stepImpulses, contacts.Length);
         for (int k = _prepared; k < contacts.Length; k++)
         {
             ref Contact contact = ref contacts[k];
             ref ContactConstraint c = ref _constraints[k];
             c = default;
+            _stepImpulses[k] = default;
             c.A = SlotOf(contact.BodyA);
             c.B = SlotOf(contact.BodyB);
             c.Friction = _mixing.Friction(contact, _friction);
             _ = _mixing.Restitution(contact, _restitution); // a rule out of range throws now, before anything moves
-            c.RadiusA = _radii[c.A];
-            c.RadiusB = _radii[c.B];
             c.PlaneOffset = contact.IsPlaneContact ? contact.PlaneOffset : float.NaN;
             if (WarmStarting && _cache.TryGet(k, contact.Key, out float normalImpulse, out Vector3 frictionImpulse))
             {
                 c.NormalImpulse = normalImpulse * _warmStartScale;
-                c.FrictionImpulse = frictionImpulse * _warmStartScale;
+                _stepImpulses[k].Friction = frictionImpulse * _warmStartScale;
             }
         }
 
@@ -301,16 +302,16 @@ public sealed partial class SequentialImpulseSolver
     /// as the impact pass measures them in a world without gravity: whether a slow pair grazing by, or passing within
     /// float rounding of touching, is a resting contact is decided from where it really is, not from its rounding.
     /// </summary>
-    private static float MeasureInDouble(ref ContactConstraint c, in Contact contact)
+    private float MeasureInDouble(ref ContactConstraint c, in Contact contact)
     {
         Vector3D centreA = contact.BodyA.PreciseCentre;
         if (c.IsPlaneContact)
         {
             c.Normal = contact.Normal;
-            return (float)ContactGeometry.Unchecked.PlanePenetration(centreA, c.RadiusA, c.Normal, c.PlaneOffset);
+            return (float)ContactGeometry.Unchecked.PlanePenetration(centreA, _radii[c.A], c.Normal, c.PlaneOffset);
         }
 
-        double penetration = ContactGeometry.Unchecked.CirclePenetration(centreA, c.RadiusA, contact.BodyB.PreciseCentre, c.RadiusB, out Vector3D normal);
+        double penetration = ContactGeometry.Unchecked.CirclePenetration(centreA, _radii[c.A], contact.BodyB.PreciseCentre, _radii[c.B], out Vector3D normal);
         c.Normal = normal.Rounded;
         return (float)penetration;
     }
@@ -340,6 +341,7 @@ public sealed partial class SequentialImpulseSolver
             ref SolverBody a = ref _bodies[c.A];
             ref SolverBody b = ref _bodies[c.B];
             Vector3 positionA = _positions[c.A];
+            float radiusA = _radii[c.A], radiusB = _radii[c.B];
             float penetration;
             if (noGravity)
             {
@@ -347,18 +349,18 @@ public sealed partial class SequentialImpulseSolver
             }
             else if (c.IsPlaneContact)
             {
-                penetration = ContactGeometry.Unchecked.PlanePenetration(positionA, c.RadiusA, c.Normal = contacts[k].Normal, c.PlaneOffset);
+                penetration = ContactGeometry.Unchecked.PlanePenetration(positionA, radiusA, c.Normal = contacts[k].Normal, c.PlaneOffset);
             }
             else
             {
-                penetration = ContactGeometry.Unchecked.CirclePenetration(positionA, c.RadiusA, _positions[c.B], c.RadiusB, out c.Normal);
+                penetration = ContactGeometry.Unchecked.CirclePenetration(positionA, radiusA, _positions[c.B], radiusB, out c.Normal);
             }
 
             // Lever arms: the contact point lies on the line of centres, r_A = −ρ_A n and r_B = ρ_B n (eq. 16), with
             // ρ = r − d/2 for depth d (the point midway through the overlap). So r × n = 0: the normal impulse turns
             // nothing, and ω × r adds nothing along n.
-            c.RhoA = c.RadiusA - 0.5f * penetration;
-            c.RhoB = c.RadiusB - 0.5f * penetration;
+            c.RhoA = radiusA - 0.5f * penetration;
+            c.RhoB = radiusB - 0.5f * penetration;
             float normalVelocity = Vector3.Dot(a.Linear - b.Linear, c.Normal); // eq. 13–14 along n
             bool pushed = c.NormalImpulse > 0 || contacts[k].NormalImpulse > 0; // in the last substep, or by an impact of this step
             bool solved = (penetration >= 0 || (penetration >= -_slop && pushed)) && normalVelocity >= -_restitutionThreshold;
@@ -367,7 +369,7 @@ public sealed partial class SequentialImpulseSolver
             if (!solved)
             {
                 c.NormalImpulse = 0;
-                c.FrictionImpulse = Vector3.Zero;
+                _stepImpulses[k].Friction = Vector3.Zero;
                 c.FrictionImpulse1 = c.FrictionImpulse2 = 0;
                 continue;
             }
@@ -382,13 +384,11 @@ public sealed partial class SequentialImpulseSolver
             c.NormalMass = InverseOrZero(inverseMassSum); // eq. 16 along n: r × n = 0 for spheres, so J_α = 0
             if (_planar)
             {
+                // The second tangent's fields stay as PrepareConstraints zeroed them (ContactConstraint).
                 c.Tangent1 = new Vector3(c.Normal.Y, -c.Normal.X, 0);
-                c.Tangent2 = Vector3.Zero;
                 c.SpinA1 = new Vector3(0, 0, c.RhoA * InverseInertiaZ(c.A));
                 c.SpinB1 = new Vector3(0, 0, -c.RhoB * InverseInertiaZ(c.B));
-                c.SpinA2 = c.SpinB2 = Vector3.Zero;
                 c.TangentMass1 = InverseOrZero(inverseMassSum + c.RhoA * c.SpinA1.Z - c.RhoB * c.SpinB1.Z);
-                c.TangentMass2 = c.FrictionImpulse2 = 0;
             }
             else
             {
@@ -412,10 +412,10 @@ public sealed partial class SequentialImpulseSolver
                     c.TangentMass1 = InverseOrZero(inverseMassSum + Vector3.Dot(c.RhoB * c.SpinB1 - c.RhoA * c.SpinA1, c.Tangent2));
                     c.TangentMass2 = InverseOrZero(inverseMassSum + Vector3.Dot(c.RhoA * c.SpinA2 - c.RhoB * c.SpinB2, c.Tangent1));
                 }
-                c.FrictionImpulse2 = Vector3.Dot(c.FrictionImpulse, c.Tangent2);
+                c.FrictionImpulse2 = Vector3.Dot(_stepImpulses[k].Friction, c.Tangent2);
             }
 
-            c.FrictionImpulse1 = Vector3.Dot(c.FrictionImpulse, c.Tangent1);
+            c.FrictionImpulse1 = Vector3.Dot(_stepImpulses[k].Friction, c.Tangent1);
             ClampFriction(ref c);
         }
 

@@ -299,9 +299,10 @@ public sealed partial class SequentialImpulseSolver
         foreach (int k in _active.AsSpan(0, _activeCount))
         {
             ref ContactConstraint c = ref _constraints[k];
-            c.FrictionImpulse = c.FrictionImpulse1 * c.Tangent1 + c.FrictionImpulse2 * c.Tangent2;
-            c.StepNormalImpulse += c.NormalImpulse;
-            c.StepFrictionImpulse += MathF.Sqrt(c.FrictionImpulse1 * c.FrictionImpulse1 + c.FrictionImpulse2 * c.FrictionImpulse2);
+            ref ContactStepImpulses step = ref _stepImpulses[k];
+            step.Friction = c.FrictionImpulse1 * c.Tangent1 + c.FrictionImpulse2 * c.Tangent2;
+            step.Normal += c.NormalImpulse;
+            step.FrictionMagnitude += MathF.Sqrt(c.FrictionImpulse1 * c.FrictionImpulse1 + c.FrictionImpulse2 * c.FrictionImpulse2);
         }
     }
 
@@ -314,9 +315,9 @@ public sealed partial class SequentialImpulseSolver
         {
             ref ContactConstraint c = ref _constraints[k];
             ref Contact contact = ref contacts[k];
-            _cache.Store(contact.Key, c.NormalImpulse, c.FrictionImpulse);
-            contact.NormalImpulse += c.StepNormalImpulse;
-            contact.TangentImpulse += c.StepFrictionImpulse;
+            _cache.Store(contact.Key, c.NormalImpulse, _stepImpulses[k].Friction);
+            contact.NormalImpulse += _stepImpulses[k].Normal;
+            contact.TangentImpulse += _stepImpulses[k].FrictionMagnitude;
         }
 
         _cache.SubstepLength = _step!.SubstepLength;
