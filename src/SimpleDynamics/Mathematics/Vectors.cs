@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 
 namespace SimpleDynamics.Mathematics;
 
@@ -59,6 +60,16 @@ public static class Vectors
             throw new ArgumentException($"n must be a finite, non-zero (unit) vector, but was {n}.", nameof(n));
         }
 
+        UncheckedTangents(n, out t1, out t2);
+    }
+
+    /// <summary>
+    /// <see cref="Tangents"/> without its checks, inlined where the solver measures every contact each substep:
+    /// <paramref name="n"/> must be a finite unit vector.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static void UncheckedTangents(Vector3 n, out Vector3 t1, out Vector3 t2)
+    {
         // Cross with whichever axis is least parallel to n; z first so that planar normals keep t1 planar.
         Vector3 axis = MathF.Abs(n.Z) < 0.9f ? Vector3.UnitZ : Vector3.UnitX;
         t1 = Vector3.Normalize(Vector3.Cross(n, axis));

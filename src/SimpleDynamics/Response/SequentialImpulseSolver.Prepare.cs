@@ -285,7 +285,12 @@ public sealed partial class SequentialImpulseSolver
             c.A = SlotOf(contact.BodyA);
             c.B = SlotOf(contact.BodyB);
             c.Friction = _mixing.Friction(contact, _friction);
-            _ = _mixing.Restitution(contact, _restitution); // a rule out of range throws now, before anything moves
+            if (!ReferenceEquals(_mixing, MaterialMixing.Default))
+            {
+                // A rule of the user's that returns ε out of range throws now, before anything moves (the default, the
+                // larger of two values in [0, 1], cannot).
+                _ = _mixing.Restitution(contact, _restitution);
+            }
             c.PlaneOffset = contact.IsPlaneContact ? contact.PlaneOffset : float.NaN;
             if (WarmStarting && _cache.TryGet(k, contact.Key, out float normalImpulse, out Vector3 frictionImpulse))
             {
@@ -392,7 +397,7 @@ public sealed partial class SequentialImpulseSolver
             }
             else
             {
-                Vectors.Tangents(c.Normal, out c.Tangent1, out c.Tangent2);
+                Vectors.UncheckedTangents(c.Normal, out c.Tangent1, out c.Tangent2); // a unit normal: measured, or a plane's
                 float kA = _inertiaScalars[c.A], kB = _inertiaScalars[c.B];
                 if (!float.IsNaN(kA) && !float.IsNaN(kB))
                 {
