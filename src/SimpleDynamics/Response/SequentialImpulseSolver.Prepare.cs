@@ -11,7 +11,7 @@ public sealed partial class SequentialImpulseSolver
 {
     private readonly HeightOrder _heightOrder = new();
     private SolverBody[] _bodies = new SolverBody[InitialCapacity];
-    private Matrix3[] _inverseInertias = new Matrix3[InitialCapacity]; // per slot, world I⁻¹, copied only where it is not k·1 (_inertiaScalars NaN)
+    private Matrix3[] _inverseInertias = new Matrix3[InitialCapacity]; // per slot, world I⁻¹: at the step's start, and each substep where it is not k·1
     private Vector3[] _positions = new Vector3[InitialCapacity];
     private ContactConstraint[] _constraints = new ContactConstraint[InitialCapacity];
     private ContactStepImpulses[] _stepImpulses = new ContactStepImpulses[InitialCapacity]; // per constraint
@@ -82,6 +82,7 @@ public sealed partial class SequentialImpulseSolver
         _positions[0] = Vector3.Zero;
         _radii[0] = 0;
         _inertiaScalars[0] = 0;
+        _inverseInertias[0] = default;
         for (int i = 0; i < n; i++)
         {
             GatherShape(bodies[i], _slotOf[i]);
@@ -94,6 +95,7 @@ public sealed partial class SequentialImpulseSolver
     {
         _radii[slot] = body.radius;
         _inertiaScalars[slot] = !body.IsDynamic ? 0f : body.isotropic ? body.inverseInertia.M11 : float.NaN;
+        _inverseInertias[slot] = body.inverseInertiaWorld; // then each substep where it turns with the body (GatherState)
     }
 
     /// <summary>
