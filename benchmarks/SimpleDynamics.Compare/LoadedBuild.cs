@@ -46,7 +46,7 @@ internal sealed class LoadedBuild
         _sweepsThisStep = sweeps is null ? () => 0 : () => (int)sweeps.GetValue(responder)!;
     }
 
-    /// <summary>Velocity sweeps done since <see cref="Step"/> was last asked, where the build reports them.</summary>
+    /// <summary>Velocity sweeps summed over the steps since this was last set to 0, where the build reports them.</summary>
     public long Sweeps { get; set; }
 
     public void Step(int steps, float dt)

@@ -170,7 +170,7 @@ public sealed partial class SequentialImpulseSolver
         {
             int slot = _slotOf[i];
             RigidBody body = bodies[i];
-            _bodies[slot] = new SolverBody { Linear = body.linearVelocity, Angular = body.angularVelocity, InverseMass = body.inverseMass };
+            _bodies[slot] = SolverBody.Of(body);
             _positions[slot] = body.position;
             if (float.IsNaN(_inertiaScalars[slot]))
             {
@@ -191,14 +191,7 @@ public sealed partial class SequentialImpulseSolver
     {
         for (int i = 0; i < bodies.Length; i++)
         {
-            RigidBody body = bodies[i];
-            if (body.IsDynamic)
-            {
-                // Infinite-mass bodies keep their velocities.
-                ref SolverBody state = ref _bodies[_slotOf[i]];
-                body.linearVelocity = state.Linear;
-                body.angularVelocity = state.Angular;
-            }
+            _bodies[_slotOf[i]].StoreTo(bodies[i]);
         }
     }
 
@@ -393,8 +386,8 @@ public sealed partial class SequentialImpulseSolver
             {
                 // The second tangent's fields stay as PrepareConstraints zeroed them (ContactConstraint).
                 c.Tangent1 = new Vector3(c.Normal.Y, -c.Normal.X, 0);
-                c.SpinA1 = new Vector3(0, 0, c.RhoA * InverseInertiaZ(c.A));
-                c.SpinB1 = new Vector3(0, 0, -c.RhoB * InverseInertiaZ(c.B));
+                c.SpinA1 = new Vector3(0, 0, c.RhoA * _inverseInertias[c.A].M33);
+                c.SpinB1 = new Vector3(0, 0, -c.RhoB * _inverseInertias[c.B].M33);
                 c.TangentMass1 = InverseOrZero(inverseMassSum + c.RhoA * c.SpinA1.Z - c.RhoB * c.SpinB1.Z);
             }
             else
@@ -440,13 +433,6 @@ public sealed partial class SequentialImpulseSolver
         }
 
         return true;
-    }
-
-    /// <summary>(I⁻¹)_zz of the body in a slot, world frame: what a torque along z does to its spin along z.</summary>
-    private float InverseInertiaZ(int slot)
-    {
-        float k = _inertiaScalars[slot];
-        return float.IsNaN(k) ? _inverseInertias[slot].M33 : k;
     }
 
     private int SlotOf(RigidBody body) => body.index < 0 ? 0 : _slotOf[body.index]; // the ground (index −1) is slot 0

@@ -1,5 +1,6 @@
 using System.Numerics;
 using System.Runtime.InteropServices;
+using SimpleDynamics.Bodies;
 
 namespace SimpleDynamics.Response;
 
@@ -14,4 +15,21 @@ internal struct SolverBody
     public Vector3 Linear;
     public Vector3 Angular;
     public float InverseMass;
+
+    public static SolverBody Of(RigidBody body) => new()
+    {
+        Linear = body.linearVelocity,
+        Angular = body.angularVelocity,
+        InverseMass = body.inverseMass,
+    };
+
+    /// <summary>Writes the velocities back to a dynamic body; infinite-mass bodies keep theirs.</summary>
+    public readonly void StoreTo(RigidBody body)
+    {
+        if (body.IsDynamic)
+        {
+            body.linearVelocity = Linear;
+            body.angularVelocity = Angular;
+        }
+    }
 }
