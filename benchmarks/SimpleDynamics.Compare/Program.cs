@@ -1,6 +1,8 @@
 using System;
 using System.Diagnostics;
 using System.Globalization;
+using System.CommandLine;
+using System.IO;
 using System.Linq;
 
 namespace SimpleDynamics.Compare;
@@ -14,51 +16,61 @@ namespace SimpleDynamics.Compare;
 /// </summary>
 internal static class Program
 {
-    private const string Usage = """
-        Usage: dotnet run -c Release --project benchmarks/SimpleDynamics.Compare -- <folder A> <folder B> [options]
-
-        Each folder holds a Release build of the library, e.g.
-          git worktree add ../old <commit> && dotnet build ../old/src/SimpleDynamics -c Release -f net8.0 -o /tmp/libA
-          dotnet build src/SimpleDynamics -c Release -f net8.0 -o /tmp/libB
-
-        Options (defaults in brackets):
-          --bodies N    balls in Scenes.BallPit [1000]
-          --3d          spheres instead of discs in the plane
-          --seed S      the scene's seed [1]
-          --pour N      steps before timing, to let the pile settle [600]
-          --rounds N    rounds, each timing both builds [16]
-          --steps N     steps per build per round [60]
-        """;
-
     private const float Dt = 1f / 60f;
+
+    private static readonly Argument<DirectoryInfo[]> s_folders = new("folders")
+    {
+        Description = "Two folders, A and B, each holding a Release build of the library, e.g. from\n" +
+            "git worktree add ../old <commit> && dotnet build ../old/src/SimpleDynamics -c Release -f net8.0 -o /tmp/libA",
+        Arity = new ArgumentArity(2, 2),
+    };
+
+    private static readonly Option<int> s_bodies = Whole("--bodies", "Balls in Scenes.BallPit", 1000, least: 1);
+    private static readonly Option<bool> s_3d = new("--3d") { Description = "Spheres instead of discs in the plane" };
+    private static readonly Option<int> s_seed = Whole("--seed", "The scene's seed", 1, least: 0);
+    private static readonly Option<int> s_pour = Whole("--pour", "Steps before timing, to let the pile settle", 600, least: 0);
+    private static readonly Option<int> s_rounds = Whole("--rounds", "Rounds, each timing both builds", 16, least: 1);
+    private static readonly Option<int> s_steps = Whole("--steps", "Steps per build per round", 60, least: 1);
 
     private static int Main(string[] args)
     {
-        try
+        var command = new RootCommand("Steps the same ball pit with two builds of the library in turn and prints B's time over A's.")
         {
-            return Run(args);
-        }
-        catch (ArgumentException error)
+            s_folders, s_bodies, s_3d, s_seed, s_pour, s_rounds, s_steps,
+        };
+        s_folders.Validators.Add(result =>
         {
-            Console.Error.WriteLine(error.Message);
-            Console.Error.WriteLine(Usage);
-            return 2;
-        }
+            foreach (DirectoryInfo folder in result.GetValueOrDefault<DirectoryInfo[]>() ?? [])
+            {
+                if (!folder.Exists)
+                {
+                    result.AddError($"No folder {folder.FullName}.");
+                }
+            }
+        });
+        command.SetAction(parse => Run(
+            parse.GetValue(s_folders)!, parse.GetValue(s_bodies), !parse.GetValue(s_3d), parse.GetValue(s_seed),
+            parse.GetValue(s_pour), parse.GetValue(s_rounds), parse.GetValue(s_steps)));
+        return command.Parse(args).Invoke();
     }
 
-    private static int Run(string[] args)
+    private static Option<int> Whole(string name, string description, int fallback, int least)
     {
-        string[] folders = args.Where(a => !a.StartsWith("--", StringComparison.Ordinal) && !IsOptionValue(args, a)).ToArray();
-        if (folders.Length != 2)
+        var option = new Option<int>(name) { Description = description, HelpName = "N", DefaultValueFactory = _ => fallback };
+        option.Validators.Add(result =>
         {
-            throw new ArgumentException("Give two folders, A and B.");
-        }
+            if (result.GetValueOrDefault<int>() < least)
+            {
+                result.AddError($"{name} needs a whole number of at least {least}.");
+            }
+        });
+        return option;
+    }
 
-        int bodies = Option(args, "--bodies", 1000, 1), seed = Option(args, "--seed", 1, 0), pour = Option(args, "--pour", 600, 0);
-        int rounds = Option(args, "--rounds", 16, 1), steps = Option(args, "--steps", 60, 1);
-        bool planar = !args.Contains("--3d");
-        var a = new LoadedBuild(folders[0], bodies, planar, seed);
-        var b = new LoadedBuild(folders[1], bodies, planar, seed);
+    private static int Run(DirectoryInfo[] folders, int bodies, bool planar, int seed, int pour, int rounds, int steps)
+    {
+        var a = new LoadedBuild(folders[0].FullName, bodies, planar, seed);
+        var b = new LoadedBuild(folders[1].FullName, bodies, planar, seed);
         a.Step(pour, Dt);
         b.Step(pour, Dt);
         bool samePour = a.State().SequenceEqual(b.State());
@@ -90,27 +102,5 @@ internal static class Program
             ? "every body's state the same in A and B, bit for bit, after the pour and at the end"
             : $"the builds' states differ ({(samePour ? "at the end" : "already after the pour")}): they are not the same physics, and the times compare different piles");
         return 0;
-    }
-
-    private static bool IsOptionValue(string[] args, string value)
-    {
-        int at = Array.IndexOf(args, value);
-        return at > 0 && args[at - 1].StartsWith("--", StringComparison.Ordinal) && args[at - 1] != "--3d";
-    }
-
-    private static int Option(string[] args, string name, int fallback, int least)
-    {
-        int at = Array.IndexOf(args, name);
-        if (at < 0)
-        {
-            return fallback;
-        }
-
-        if (at + 1 >= args.Length || !int.TryParse(args[at + 1], NumberStyles.Integer, CultureInfo.InvariantCulture, out int value) || value < least)
-        {
-            throw new ArgumentException($"{name} needs a whole number of at least {least}.");
-        }
-
-        return value;
     }
 }
