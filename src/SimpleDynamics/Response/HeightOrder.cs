@@ -22,13 +22,24 @@ internal sealed class HeightOrder
     private long[] _keys = new long[InitialCapacity]; // a large slice's (height, index) keys while it is sorted
     private ulong[] _runTies = new ulong[InitialCapacity]; // the tie keys of a run of equal heights in a large slice
     private int[] _runItems = new int[InitialCapacity];
+    private int[] _last = new int[InitialCapacity]; // the order the last sort gave, tried first by the next one
+    private int _lastCount = -1; // its length; −1 when there is none to try
     private int _peak; // the most slices one sort used since the last ShrinkIfIdle
+
+    /// <summary>Whether the last sort reused the order of the one before, for tests.</summary>
+    internal bool ReusedLastOrder { get; private set; }
     private ShrinkPolicy _room;
 
     /// <summary>Applies the <see cref="ShrinkPolicy"/> once per step; the working array holds nothing between sorts.</summary>
     public void ShrinkIfIdle()
     {
         Buffers.ShrinkIfIdle(ref _cursor, _peak, ref _room, InitialCapacity);
+        if (_last.Length > _cursor.Length)
+        {
+            Buffers.ShrinkTo(ref _last, _cursor.Length, 0);
+            _lastCount = -1;
+        }
+
         if (_keys.Length > _cursor.Length)
         {
             Buffers.ShrinkTo(ref _keys, _cursor.Length, 0);
@@ -43,6 +54,8 @@ internal sealed class HeightOrder
     public void TrimExcess()
     {
         Buffers.ShrinkTo(ref _cursor, InitialCapacity, 0);
+        Buffers.ShrinkTo(ref _last, InitialCapacity, 0);
+        _lastCount = -1;
         Buffers.ShrinkTo(ref _keys, InitialCapacity, 0);
         Buffers.ShrinkTo(ref _runTies, InitialCapacity, 0);
         Buffers.ShrinkTo(ref _runItems, InitialCapacity, 0);
@@ -97,14 +110,62 @@ internal sealed class HeightOrder
 
         Buffers.EnsureCapacity(ref _cursor, n + 1);
         _peak = Math.Max(_peak, n + 1); // the key arrays are kept no larger than this
-        if (!(highest > lowest) || float.IsInfinity(highest - lowest))
+        ReusedLastOrder = false;
+        if (float.IsInfinity(highest - lowest))
+        {
+            for (int i = 0; i < n; i++)
+            {
+                order[i] = i; // heights beyond float's range apart: kept in their order
+            }
+
+            _lastCount = -1; // not an order by height: nothing to try next time
+            return;
+        }
+
+        if (n == _lastCount && LastOrderHolds(heights, ties))
+        {
+            _last.AsSpan(0, n).CopyTo(order);
+            ReusedLastOrder = true;
+            return;
+        }
+
+        SortAnew(heights, ties, order, lowest, highest);
+        Buffers.EnsureCapacity(ref _last, n);
+        order.CopyTo(_last);
+        _lastCount = n;
+    }
+
+    /// <summary>
+    /// Whether the last order still puts these heights (and ties) in order: each item strictly after the one before
+    /// by height, then by tie key (or by index without ties). NaN heights fail, and are sorted anew.
+    /// </summary>
+    private bool LastOrderHolds(ReadOnlySpan<float> heights, ReadOnlySpan<ulong> ties)
+    {
+        ReadOnlySpan<int> last = _last.AsSpan(0, _lastCount);
+        for (int k = 1; k < last.Length; k++)
+        {
+            int below = last[k - 1], item = last[k];
+            float lower = heights[below], height = heights[item];
+            if (!(lower < height || (lower == height && (ties.IsEmpty ? below < item : ties[below] < ties[item]))))
+            {
+                return false;
+            }
+        }
+
+        return true;
+    }
+
+    private void SortAnew(ReadOnlySpan<float> heights, ReadOnlySpan<ulong> ties, Span<int> order, float lowest, float highest)
+    {
+        int n = heights.Length;
+        if (!(highest > lowest))
         {
             for (int i = 0; i < n; i++)
             {
                 order[i] = i;
             }
 
-            if (!ties.IsEmpty && n > 1 && !float.IsInfinity(highest - lowest))
+            if (!ties.IsEmpty && n > 1)
             {
                 SortByKeys(heights, ties, order); // all at one height: by their ties alone
             }

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Linq;
 using FsCheck.Fluent;
 using SimpleDynamics.Response;
@@ -93,4 +94,80 @@ public class HeightOrderLaws
                 Law.Holds(inOrder.SequenceEqual(expected), "by height, then by tie key");
                 Law.Holds(Sorted(permutation).SequenceEqual(expected), "the same order from the items permuted");
             }, seed: 705);
+
+    /// <summary>
+    /// A sort tries the order the last one gave before sorting anew (a resting pile keeps its order). Over generated
+    /// runs of sorts by one instance (heights left alone, nudged, swapped; tie keys swapped; items added or dropped;
+    /// NaN and infinite heights), every sort must give exactly what a new instance gives, and the runs must take the
+    /// reuse often enough for that to be tested.
+    /// </summary>
+    [Fact]
+    public void A_sort_that_reuses_the_last_order_gives_exactly_what_a_fresh_sort_gives()
+    {
+        int sorts = 0, reused = 0;
+        PropertyCheck.Run(
+            from count in Gen.Choose(0, 120)
+            from withTies in Gen.Elements(false, true)
+            from heights in Gen.OneOf(Generators.UniformF(-5, 5), Gen.Elements(-1f, 0f, 2.5f)).ArrayOf(count)
+            from changes in Gen.Choose(0, 5).Zip(Gen.Choose(0, int.MaxValue)).ArrayOf(8)
+            select (withTies, heights, changes),
+            run =>
+            {
+                var heights = run.heights.ToList();
+                var ties = Enumerable.Range(0, heights.Count).Select(i => (ulong)(i * 7919 % 1009) << 20 | (uint)i).ToList();
+                var reusing = new HeightOrder();
+                foreach ((int change, int draw) in run.changes)
+                {
+                    Change(heights, ties, change, draw);
+                    float[] h = heights.ToArray();
+                    ulong[] t = run.withTies ? ties.ToArray() : Array.Empty<ulong>();
+                    var order = new int[h.Length];
+                    var expected = new int[h.Length];
+                    reusing.Sort(h, t, order);
+                    new HeightOrder().Sort(h, t, expected);
+                    Law.Holds(order.SequenceEqual(expected), $"after change {change}: [{string.Join(", ", order)}], not [{string.Join(", ", expected)}]");
+                    sorts++;
+                    reused += reusing.ReusedLastOrder ? 1 : 0;
+                }
+            }, seed: 707, maxTest: 300);
+
+        Law.Holds(reused > sorts / 5, $"only {reused} of {sorts} sorts reused the last order: the law above hardly tested it");
+    }
+
+    private static void Change(List<float> heights, List<ulong> ties, int change, int draw)
+    {
+        int n = heights.Count, i = n == 0 ? 0 : draw % n, j = n == 0 ? 0 : (draw / 7) % n;
+        switch (change)
+        {
+            case not 4 when n == 0:
+                break; // nothing to change but the count
+            case 0:
+                break; // left alone: the last order holds
+            case 1:
+                heights[i] += (draw % 3 - 1) * 1e-4f; // nudged: the order may or may not still hold
+                break;
+            case 2:
+                (heights[i], heights[j]) = (heights[j], heights[i]);
+                break;
+            case 3:
+                (ties[i], ties[j]) = (ties[j], ties[i]); // the same heights, other tie keys (another pair in that place)
+                break;
+            case 4:
+                if (draw % 2 == 0 && n > 0)
+                {
+                    heights.RemoveAt(n - 1);
+                    ties.RemoveAt(n - 1);
+                }
+                else
+                {
+                    heights.Add(n == 0 ? 0f : heights[i]);
+                    ties.Add((ulong)(n + 1) << 40 | (uint)n);
+                }
+
+                break;
+            default:
+                heights[i] = draw % 3 == 0 ? float.NaN : draw % 3 == 1 ? float.PositiveInfinity : heights[j];
+                break;
+        }
+    }
 }
