@@ -75,4 +75,13 @@ public static class Vectors
         t1 = Vector3.Normalize(Vector3.Cross(n, axis));
         t2 = Vector3.Cross(n, t1);
     }
+
+    /// <summary>
+    /// a · b in scalar arithmetic, for the solver's passes over every contact: the same value as
+    /// <see cref="Vector3.Dot(Vector3, Vector3)"/> but for the sign of a zero ((a_x b_x + a_y b_y) + a_z b_z, where the
+    /// JIT's DPPS instruction adds a fourth, zero lane to a_z b_z). DPPS takes about 15 cycles on AMD Zen 2 and 3
+    /// (A. Fog, "Instruction tables", https://www.agner.org/optimize/instruction_tables.pdf), and the sweeps wait on it.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static float Dot(Vector3 a, Vector3 b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
 }

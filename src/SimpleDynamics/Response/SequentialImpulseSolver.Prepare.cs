@@ -189,11 +189,11 @@ public sealed partial class SequentialImpulseSolver
             // nothing, and ω × r adds nothing along n.
             c.RhoA = radiusA - 0.5f * penetration;
             c.RhoB = radiusB - 0.5f * penetration;
-            float normalVelocity = Vector3.Dot(a.Linear - b.Linear, c.Normal); // eq. 13–14 along n
+            float normalVelocity = Vectors.Dot(a.Linear - b.Linear, c.Normal); // eq. 13–14 along n
             bool pushed = c.NormalImpulse > 0 || contacts[k].NormalImpulse > 0; // in the last substep, or by an impact of this step
             bool solved = (penetration >= 0 || (penetration >= -_slop && pushed)) && normalVelocity >= -_restitutionThreshold;
-            c.AIsUpper = c.B == 0 || Vector3.Dot(positionA - _positions[c.B], _gravity) <= 0;
-            c.CarriesWeight = MathF.Abs(Vector3.Dot(c.Normal, _gravity)) > weight;
+            c.AIsUpper = c.B == 0 || Vectors.Dot(positionA - _positions[c.B], _gravity) <= 0;
+            c.CarriesWeight = MathF.Abs(Vectors.Dot(c.Normal, _gravity)) > weight;
             if (!solved)
             {
                 c.NormalImpulse = 0;
@@ -237,13 +237,13 @@ public sealed partial class SequentialImpulseSolver
                     c.SpinB1 = c.RhoB * _inverseInertias[c.B].Transform(c.Tangent2);
                     c.SpinA2 = c.RhoA * _inverseInertias[c.A].Transform(c.Tangent1);
                     c.SpinB2 = -c.RhoB * _inverseInertias[c.B].Transform(c.Tangent1);
-                    c.TangentMass1 = InverseOrZero(inverseMassSum + Vector3.Dot(c.RhoB * c.SpinB1 - c.RhoA * c.SpinA1, c.Tangent2));
-                    c.TangentMass2 = InverseOrZero(inverseMassSum + Vector3.Dot(c.RhoA * c.SpinA2 - c.RhoB * c.SpinB2, c.Tangent1));
+                    c.TangentMass1 = InverseOrZero(inverseMassSum + Vectors.Dot(c.RhoB * c.SpinB1 - c.RhoA * c.SpinA1, c.Tangent2));
+                    c.TangentMass2 = InverseOrZero(inverseMassSum + Vectors.Dot(c.RhoA * c.SpinA2 - c.RhoB * c.SpinB2, c.Tangent1));
                 }
-                c.FrictionImpulse2 = Vector3.Dot(_stepImpulses[k].Friction, c.Tangent2);
+                c.FrictionImpulse2 = Vectors.Dot(_stepImpulses[k].Friction, c.Tangent2);
             }
 
-            c.FrictionImpulse1 = Vector3.Dot(_stepImpulses[k].Friction, c.Tangent1);
+            c.FrictionImpulse1 = Vectors.Dot(_stepImpulses[k].Friction, c.Tangent1);
             ClampFriction(ref c);
         }
 
