@@ -24,7 +24,7 @@ public static partial class ContactGeometry
         public static float CirclePenetration(Vector3 centreA, float radiusA, Vector3 centreB, float radiusB, out Vector3 normal)
         {
             Vector3 delta = centreA - centreB;
-            float distanceSquared = delta.LengthSquared();
+            float distanceSquared = Vectors.LengthSquared(delta);
             float radii = radiusA + radiusB;
             if (distanceSquared <= 1e-12f * radii * radii)
             {
@@ -39,7 +39,7 @@ public static partial class ContactGeometry
 
         /// <summary>Penetration of a circle into a plane: r − (signed distance of the centre).</summary>
         public static float PlanePenetration(Vector3 centre, float radius, Vector3 planeNormal, float planeOffset) =>
-            radius - (Vector3.Dot(planeNormal, centre) - planeOffset);
+            radius - (Vectors.Dot(planeNormal, centre) - planeOffset);
 
         /// <summary>
         /// <see cref="CirclePenetration(Vector3, float, Vector3, float, out Vector3)"/> from centres in double precision
@@ -124,7 +124,7 @@ public static partial class ContactGeometry
             float half = 0.5f * lookahead;
             float reach = a.radius + b.radius + margin + half * (speedA + speedB);
             Vector3 middles = PathMiddle(a, lookahead) - PathMiddle(b, lookahead);
-            return middles.LengthSquared() < reach * reach;
+            return Vectors.LengthSquared(middles) < reach * reach;
         }
 
         /// <summary>The plane test of <see cref="ContactGeometry.TryCollide(RigidBody, in StaticPlane, int, RigidBody, float, float, out Contact)"/>, unchecked.</summary>

@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using SimpleDynamics.Bodies;
+using SimpleDynamics.Mathematics;
 
 namespace SimpleDynamics.Collision;
 
@@ -204,7 +205,7 @@ public sealed partial class SpatialHashDetector : ICollisionDetector, ITrimmable
                     }
 
                     float grown = _bounds[i].Radius + _bounds[j].Radius;
-                    if (Vector3.DistanceSquared(_bounds[i].Centre, _bounds[j].Centre) >= grown * grown)
+                    if (Vectors.DistanceSquared(_bounds[i].Centre, _bounds[j].Centre) >= grown * grown)
                     {
                         continue; // the grown spheres do not meet
                     }
@@ -245,7 +246,7 @@ public sealed partial class SpatialHashDetector : ICollisionDetector, ITrimmable
     private void TryPair(ReadOnlySpan<RigidBody> bodies, int i, int j, CollisionData collisions, float margin, float lookahead)
     {
         float reach = _bounds[i].Reach + _bounds[j].Reach;
-        if (Vector3.DistanceSquared(_bounds[i].Centre, _bounds[j].Centre) < reach * reach) // else the spheres do not meet
+        if (Vectors.DistanceSquared(_bounds[i].Centre, _bounds[j].Centre) < reach * reach) // else the spheres do not meet
         {
             Collide(bodies, i, j, collisions, margin, lookahead);
         }

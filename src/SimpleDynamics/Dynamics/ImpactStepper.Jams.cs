@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using SimpleDynamics.Bodies;
+using SimpleDynamics.Mathematics;
 using SimpleDynamics.Collision;
 
 namespace SimpleDynamics;
@@ -84,13 +85,13 @@ internal sealed partial class ImpactStepper
     private void ForgoGainWhileStill(int i)
     {
         Vector3 acceleration = ForcedAcceleration(i);
-        float squared = acceleration.LengthSquared();
+        float squared = Vectors.LengthSquared(acceleration);
         if (squared == 0)
         {
             return;
         }
 
-        float along = Vector3.Dot(_motion[i].U, acceleration) / squared; // the time a would take to give U its part along a
+        float along = Vectors.Dot(_motion[i].U, acceleration) / squared; // the time a would take to give U its part along a
         float forgone = MathF.Min((float)(_h - _motion[i].T), along);
         if (forgone > 0)
         {
@@ -258,7 +259,7 @@ internal sealed partial class ImpactStepper
     private void SlowFarther(ref Contact contact, int a, int b, bool moveA)
     {
         Vector3 n = contact.Normal;
-        float closing = Vector3.Dot(_motion[a].U - _motion[b].U, n);
+        float closing = Vectors.Dot(_motion[a].U - _motion[b].U, n);
         if (closing >= 0)
         {
             return;
@@ -266,14 +267,14 @@ internal sealed partial class ImpactStepper
 
         if (moveA)
         {
-            float slowing = MathF.Min(-closing, MathF.Max(-Vector3.Dot(_motion[a].U, n), 0f)); // A's speed into B, at most
+            float slowing = MathF.Min(-closing, MathF.Max(-Vectors.Dot(_motion[a].U, n), 0f)); // A's speed into B, at most
             _motion[a].U += slowing * n;
             contact.BodyA.linearVelocity = _motion[a].U;
             contact.NormalImpulse += slowing / contact.BodyA.inverseMass;
         }
         else
         {
-            float slowing = MathF.Min(-closing, MathF.Max(Vector3.Dot(_motion[b].U, n), 0f)); // B's speed into A, at most
+            float slowing = MathF.Min(-closing, MathF.Max(Vectors.Dot(_motion[b].U, n), 0f)); // B's speed into A, at most
             _motion[b].U -= slowing * n;
             contact.BodyB.linearVelocity = _motion[b].U;
             contact.NormalImpulse += slowing / contact.BodyB.inverseMass;

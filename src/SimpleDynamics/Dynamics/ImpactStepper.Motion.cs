@@ -54,7 +54,7 @@ internal sealed partial class ImpactStepper
     /// 0.12 m/s too fast and gained 639 J (generated world 1,146 of seed 884).
     /// </summary>
     private static bool HeldByContacts(Vector3 solved, Vector3 forced) =>
-        Vector3.DistanceSquared(solved, forced) > 1e-12f * (solved.LengthSquared() + forced.LengthSquared()); // |Δv| ≳ 1e-6 |v|
+        Vectors.DistanceSquared(solved, forced) > 1e-12f * (Vectors.LengthSquared(solved) + Vectors.LengthSquared(forced)); // |Δv| ≳ 1e-6 |v|
 
     /// <summary>Body i's acceleration in free flight (gravity and forces); zero while resting contacts hold it.</summary>
     private void RestoreAcceleration(int i)
@@ -107,8 +107,8 @@ internal sealed partial class ImpactStepper
         }
 
         Vector3 velocityB = b >= 0 ? _motion[b].U : Vector3.Zero;
-        float separating = Vector3.Dot(_motion[a].U - velocityB, n);
-        float pressing = Vector3.Dot(_motion[resting].A, into);
+        float separating = Vectors.Dot(_motion[a].U - velocityB, n);
+        float pressing = Vectors.Dot(_motion[resting].A, into);
         if (pressing > 0 && separating <= (float)ClosingTolerance * (_motion[a].U.Length() + velocityB.Length()))
         {
             _motion[resting].A -= pressing * into;

@@ -54,7 +54,7 @@ internal sealed partial class ImpactStepper
         }
 
         Vector3 chordB = b < 0 ? Vector3.Zero : _startChord[b];
-        float closing = -Vector3.Dot(_startChord[a] - chordB, contact.Normal);
+        float closing = -Vectors.Dot(_startChord[a] - chordB, contact.Normal);
         return closing * _h > tolerance ? penetration : penetration + tolerance;
     }
 
@@ -83,7 +83,7 @@ internal sealed partial class ImpactStepper
         if (b < 0)
         {
             ref Contact contact = ref _contacts[k];
-            if (Vector3.Dot(contact.Normal, _motion[a].Chord) >= 0)
+            if (Vectors.Dot(contact.Normal, _motion[a].Chord) >= 0)
             {
                 return; // moving away from the plane, or along it
             }
@@ -116,7 +116,7 @@ internal sealed partial class ImpactStepper
                 // about as often as it fails, which a branch per test would mispredict, and none costs much.
                 Vector3 relativeF = motionA.Chord - motionB.Chord;
                 Vector3 dF = motionA.X + motionA.Chord * (float)(t0 - motionA.T) - (motionB.X + motionB.Chord * (float)(t0 - motionB.T));
-                bool approaches = Vector3.Dot(dF, relativeF) < 0;
+                bool approaches = Vectors.Dot(dF, relativeF) < 0;
                 if (!(approaches
                     & !RestsThroughSubstep(motionA, motionB, _held[a] | _held[b], dF, relativeF)
                     & !OutOfReach(motionA, motionB, dF, relativeF)))
@@ -151,10 +151,10 @@ internal sealed partial class ImpactStepper
     private bool RestsThroughSubstep(in Motion a, in Motion b, bool held, Vector3 d, Vector3 relative)
     {
         float tolerance = HeldDepthTolerance * MathF.Min(a.Radius, b.Radius);
-        float travel = (float)_h * (float)_h * relative.LengthSquared();
+        float travel = (float)_h * (float)_h * Vectors.LengthSquared(relative);
         float deepEnough = a.Radius + b.Radius - tolerance;
         return ((a.Version | b.Version) == 0) & held
-            & (travel < 0.25f * tolerance * tolerance) & (deepEnough > 0) & (d.LengthSquared() < deepEnough * deepEnough);
+            & (travel < 0.25f * tolerance * tolerance) & (deepEnough > 0) & (Vectors.LengthSquared(d) < deepEnough * deepEnough);
     }
 
     /// <summary>
@@ -169,7 +169,7 @@ internal sealed partial class ImpactStepper
     private bool OutOfReach(in Motion a, in Motion b, Vector3 d, Vector3 relative)
     {
         float reach = a.Radius + b.Radius + (float)_h * relative.Length();
-        return d.LengthSquared() > reach * reach * (1f + 1e-5f);
+        return Vectors.LengthSquared(d) > reach * reach * (1f + 1e-5f);
     }
 
     /// <summary>Contact k's depth limit, worked out from the substep's start the first time the pair closes.</summary>
@@ -210,7 +210,7 @@ internal sealed partial class ImpactStepper
         double vx = relative.X, vy = relative.Y, vz = relative.Z;
         double dv = dx * vx + dy * vy + dz * vz;
         double dd = dx * dx + dy * dy + dz * dz;
-        if (!Approaches(dv, dd, _motion[a].Chord.LengthSquared(), _motion[b].Chord.LengthSquared()))
+        if (!Approaches(dv, dd, Vectors.LengthSquared(_motion[a].Chord), Vectors.LengthSquared(_motion[b].Chord)))
         {
             // Not approaching, or only by the rounding of a pair just answered: most contacts of a resting pile,
             // rejected before their depth limit is worked out.
@@ -272,7 +272,7 @@ internal sealed partial class ImpactStepper
     /// <summary>When a body moving along its chord reaches the plane's depth limit; +∞ if it does not.</summary>
     private double PlaneImpactTime(in Contact contact, int a, float limit)
     {
-        double closing = Vector3.Dot(contact.Normal, _motion[a].Chord);
+        double closing = Vectors.Dot(contact.Normal, _motion[a].Chord);
         if (closing >= -ClosingTolerance * _motion[a].Chord.Length())
         {
             return double.PositiveInfinity;
@@ -280,7 +280,7 @@ internal sealed partial class ImpactStepper
 
         double gap = limit - (_noGravity
             ? ContactGeometry.Unchecked.PlanePenetration(_motion[a].PreciseX, contact.BodyA.radius, contact.Normal, contact.PlaneOffset)
-            : contact.BodyA.radius - ((double)Vector3.Dot(contact.Normal, _motion[a].X) - contact.PlaneOffset));
+            : contact.BodyA.radius - ((double)Vectors.Dot(contact.Normal, _motion[a].X) - contact.PlaneOffset));
         return gap <= 0 ? _motion[a].T : _motion[a].T + gap / -closing;
     }
 }

@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using SimpleDynamics.Bodies;
+using SimpleDynamics.Mathematics;
 using SimpleDynamics.Collision;
 using SimpleDynamics.Response;
 
@@ -13,7 +14,7 @@ internal sealed partial class ImpactStepper
     private bool LeavesReach(int i)
     {
         Vector3 end = _motion[i].X + _motion[i].Chord * (float)(_h - _motion[i].T);
-        return Vector3.DistanceSquared(end, _sphereCentre[i]) > _reach[i] * _reach[i];
+        return Vectors.DistanceSquared(end, _sphereCentre[i]) > _reach[i] * _reach[i];
     }
 
     /// <summary>
@@ -74,7 +75,7 @@ internal sealed partial class ImpactStepper
         {
             // The spheres first, from the pass's own arrays: most bodies are far, and are rejected without being read.
             float reach = ownReach + _motion[j].Radius + _reach[j];
-            if (j == i || Vector3.DistanceSquared(start, _sphereCentre[j]) >= reach * reach)
+            if (j == i || Vectors.DistanceSquared(start, _sphereCentre[j]) >= reach * reach)
             {
                 continue;
             }

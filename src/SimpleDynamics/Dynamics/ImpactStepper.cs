@@ -282,7 +282,7 @@ internal sealed partial class ImpactStepper
         }
 
         Measure(ref contact, a, b, step.Planes);
-        contact.ApproachVelocity = Vector3.Dot(bodyA.VelocityAt(contact.Point) - bodyB.VelocityAt(contact.Point), contact.Normal);
+        contact.ApproachVelocity = Vectors.Dot(bodyA.VelocityAt(contact.Point) - bodyB.VelocityAt(contact.Point), contact.Normal);
         bool exhausted = _motion[a].Impacts >= ImpactsPerBody || (b >= 0 && _motion[b].Impacts >= ImpactsPerBody);
         int cost = Creeping(contact, a, b) ? ImpactsPerBody / CreepingImpactsPerBody : 1;
         _motion[a].Impacts += cost;
@@ -344,7 +344,7 @@ internal sealed partial class ImpactStepper
         Vector3 n = contact.Normal;
         Vector3 chordA = _motion[a].U + 0.5f * (float)(_h - _motion[a].T) * _motion[a].A;
         Vector3 chordB = b >= 0 ? _motion[b].U + 0.5f * (float)(_h - _motion[b].T) * _motion[b].A : Vector3.Zero;
-        float closing = Vector3.Dot(chordA - chordB, n);
+        float closing = Vectors.Dot(chordA - chordB, n);
         if (closing >= 0 || inverseMassSum == 0)
         {
             return false;

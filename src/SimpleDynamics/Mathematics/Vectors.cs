@@ -84,4 +84,16 @@ public static class Vectors
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal static float Dot(Vector3 a, Vector3 b) => a.X * b.X + a.Y * b.Y + a.Z * b.Z;
+
+    /// <summary>|a − b|² in scalar arithmetic: exactly <see cref="Vector3.DistanceSquared(Vector3, Vector3)"/>, without DPPS (see <see cref="Dot"/>).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static float DistanceSquared(Vector3 a, Vector3 b)
+    {
+        float x = a.X - b.X, y = a.Y - b.Y, z = a.Z - b.Z;
+        return x * x + y * y + z * z;
+    }
+
+    /// <summary>|v|² in scalar arithmetic: exactly <see cref="Vector3.LengthSquared"/>, without DPPS (see <see cref="Dot"/>).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static float LengthSquared(Vector3 v) => v.X * v.X + v.Y * v.Y + v.Z * v.Z;
 }

@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using SimpleDynamics.Bodies;
+using SimpleDynamics.Mathematics;
 
 namespace SimpleDynamics.Response;
 
@@ -139,7 +140,7 @@ public sealed partial class SequentialImpulseSolver
         int moved = 0;
         for (int s = 1; s < slots; s++)
         {
-            moved += Vector3.DistanceSquared(_positions[s], _publishedPositions[s]) > drift * drift ? 1 : 0;
+            moved += Vectors.DistanceSquared(_positions[s], _publishedPositions[s]) > drift * drift ? 1 : 0;
         }
 
         if (moved > slots / 8 || _positionMarks.MarkedForNext > count / 4)
@@ -196,7 +197,7 @@ public sealed partial class SequentialImpulseSolver
     /// </summary>
     private void PublishPosition(int slot, int k, float drift)
     {
-        if (Vector3.DistanceSquared(_positions[slot], _publishedPositions[slot]) > drift * drift)
+        if (Vectors.DistanceSquared(_positions[slot], _publishedPositions[slot]) > drift * drift)
         {
             _publishedPositions[slot] = _positions[slot];
             _positionMarks.MarkAround(_positionContactsOfBodies.Of(slot), k);
@@ -278,7 +279,7 @@ public sealed partial class SequentialImpulseSolver
         }
 
         float reach = _radii[c.A] + _radii[c.B] - _slop;
-        return reach > 0 && Vector3.DistanceSquared(_positions[c.A], _positions[c.B]) > reach * reach * (1f + 1e-5f);
+        return reach > 0 && Vectors.DistanceSquared(_positions[c.A], _positions[c.B]) > reach * reach * (1f + 1e-5f);
     }
 
     /// <summary>Pushes the contact's bodies apart along the normal by <paramref name="correction"/>, split by the inverse masses given.</summary>
