@@ -42,7 +42,7 @@ public sealed partial class SequentialImpulseSolver
         Buffers.EnsureCapacity(ref _inverseInertias, n + 1);
         for (int i = 0; i < n; i++)
         {
-            _bodyHeights[i] = -Vector3.Dot(bodies[i].position, gravity);
+            _bodyHeights[i] = -Vectors.Dot(bodies[i].position, gravity);
         }
 
         _gravity = gravity;

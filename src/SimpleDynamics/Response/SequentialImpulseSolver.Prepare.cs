@@ -39,7 +39,7 @@ public sealed partial class SequentialImpulseSolver
         for (int i = 0; i < contacts.Length; i++)
         {
             ref readonly Contact contact = ref contacts[i];
-            _heights[i] = -Vector3.Dot(contact.Point, gravity);
+            _heights[i] = -Vectors.Dot(contact.Point, gravity);
             _ties[i] = contact.IsPlaneContact
                 ? Contact.PlaneKey(contact.BodyA.index, contact.PlaneIndex)
                 : Contact.PairKey(contact.BodyA.index, contact.BodyB.index);
