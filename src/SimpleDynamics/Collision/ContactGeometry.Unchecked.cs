@@ -80,7 +80,7 @@ public static partial class ContactGeometry
 
         /// <summary>The pair test of <see cref="ContactGeometry.TryCollide(RigidBody, RigidBody, float, float, out Contact)"/>, unchecked.</summary>
         public static bool TryCollide(RigidBody a, RigidBody b, float margin, float lookahead, out Contact contact) =>
-            TryCollide(a, b, a.linearVelocity.Length(), b.linearVelocity.Length(), margin, lookahead, out contact);
+            TryCollide(a, b, Vectors.Length(a.linearVelocity), Vectors.Length(b.linearVelocity), margin, lookahead, out contact);
 
         /// <summary>The same, given the bodies' speeds |v_A| and |v_B| (detection works them out once per body, not per pair).</summary>
         public static bool TryCollide(RigidBody a, RigidBody b, float speedA, float speedB, float margin, float lookahead, out Contact contact)
@@ -132,7 +132,7 @@ public static partial class ContactGeometry
         {
             float penetration = PlanePenetration(body.position, body.radius, plane.Normal, plane.Offset);
             Vector3 middle = PathMiddle(body, lookahead); // its sphere's centre, as for a pair
-            bool apartThroughout = penetration < 0 && -PlanePenetration(middle, body.radius, plane.Normal, plane.Offset) >= margin + 0.5f * lookahead * body.linearVelocity.Length();
+            bool apartThroughout = penetration < 0 && -PlanePenetration(middle, body.radius, plane.Normal, plane.Offset) >= margin + 0.5f * lookahead * Vectors.Length(body.linearVelocity);
             if (!body.IsDynamic || apartThroughout ||
                 !PairFilter.Allows(body, plane, planeIndex)) // filtered pairs and sensors never become contacts
             {

@@ -1,6 +1,7 @@
 using System;
 using System.Numerics;
 using SimpleDynamics.Bodies;
+using SimpleDynamics.Mathematics;
 
 namespace SimpleDynamics.Collision;
 
@@ -56,7 +57,7 @@ public sealed partial class SpatialHashDetector
     private bool StillInside(int i, Vector3 centre, float reach)
     {
         ref KeptSphere kept = ref _keptSpheres[i];
-        return Vector3.Distance(centre, kept.Centre) + reach <= kept.Limit;
+        return Vectors.Distance(centre, kept.Centre) + reach <= kept.Limit;
     }
 
     /// <summary>Forgets the kept pairs: the next call builds the grid (internal for the benchmarks, which time a build).</summary>

@@ -155,7 +155,7 @@ public sealed partial class SpatialHashDetector : ICollisionDetector, ITrimmable
         {
             RigidBody body = bodies[i];
             // The sphere around the middle of the body's path (see ContactGeometry.TryCollide).
-            float speed = body.linearVelocity.Length();
+            float speed = Vectors.Length(body.linearVelocity);
             float reach = body.radius + halfMargin + 0.5f * lookahead * speed;
             // Grown by a rounding allowance, so that pairs that touch to within float rounding share a cell.
             Vector3 c = ContactGeometry.Unchecked.PathMiddle(body, lookahead);

@@ -109,7 +109,7 @@ internal sealed partial class ImpactStepper
         Vector3 velocityB = b >= 0 ? _motion[b].U : Vector3.Zero;
         float separating = Vectors.Dot(_motion[a].U - velocityB, n);
         float pressing = Vectors.Dot(_motion[resting].A, into);
-        if (pressing > 0 && separating <= (float)ClosingTolerance * (_motion[a].U.Length() + velocityB.Length()))
+        if (pressing > 0 && separating <= (float)ClosingTolerance * (Vectors.Length(_motion[a].U) + Vectors.Length(velocityB)))
         {
             _motion[resting].A -= pressing * into;
             RigidBody body = resting == a ? contact.BodyA : contact.BodyB;

@@ -168,7 +168,7 @@ internal sealed partial class ImpactStepper
     [MethodImpl(MethodImplOptions.AggressiveInlining)] // see Predict: taken without branches
     private bool OutOfReach(in Motion a, in Motion b, Vector3 d, Vector3 relative)
     {
-        float reach = a.Radius + b.Radius + (float)_h * relative.Length();
+        float reach = a.Radius + b.Radius + (float)_h * Vectors.Length(relative);
         return Vectors.LengthSquared(d) > reach * reach * (1f + 1e-5f);
     }
 
@@ -273,7 +273,7 @@ internal sealed partial class ImpactStepper
     private double PlaneImpactTime(in Contact contact, int a, float limit)
     {
         double closing = Vectors.Dot(contact.Normal, _motion[a].Chord);
-        if (closing >= -ClosingTolerance * _motion[a].Chord.Length())
+        if (closing >= -ClosingTolerance * Vectors.Length(_motion[a].Chord))
         {
             return double.PositiveInfinity;
         }

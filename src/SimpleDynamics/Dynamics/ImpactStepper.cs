@@ -144,7 +144,7 @@ internal sealed partial class ImpactStepper
         {
             RigidBody body = bodies[i];
             _sphereCentre[i] = ContactGeometry.Unchecked.PathMiddle(body, lookahead);
-            _reach[i] = 0.5f * margin + 0.5f * lookahead * body.linearVelocity.Length();
+            _reach[i] = 0.5f * margin + 0.5f * lookahead * Vectors.Length(body.linearVelocity);
         }
 
         ImpactCount = 0;

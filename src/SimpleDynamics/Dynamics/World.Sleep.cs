@@ -2,6 +2,7 @@ using System;
 using System.Numerics;
 using SimpleDynamics.Bodies;
 using SimpleDynamics.Collision;
+using SimpleDynamics.Mathematics;
 
 namespace SimpleDynamics;
 
@@ -139,7 +140,7 @@ public sealed partial class World
                 continue; // static and kinematic bodies never sleep
             }
 
-            float speed = body.linearVelocity.Length() + body.angularVelocity.Length() * body.radius;
+            float speed = Vectors.Length(body.linearVelocity) + Vectors.Length(body.angularVelocity) * body.radius;
             if (speed > _sleepSpeed || !body.AllowSleep || body.isSensor)
             {
                 body.sleepTime = 0;

@@ -2,6 +2,7 @@ using System;
 using System.Numerics;
 using SimpleDynamics.Bodies;
 using SimpleDynamics.Collision;
+using SimpleDynamics.Mathematics;
 
 namespace SimpleDynamics;
 
@@ -29,7 +30,7 @@ public sealed partial class World
                     continue; // sensors, static bodies and kinematic bodies at rest wake nothing
                 }
 
-                float reach = body.radius + _touchTolerance + fall + dt * body.linearVelocity.Length();
+                float reach = body.radius + _touchTolerance + fall + dt * Vectors.Length(body.linearVelocity);
                 sleepers.GatherBox(body.position - new Vector3(reach), body.position + new Vector3(reach));
                 foreach (int slot in sleepers.Candidates)
                 {

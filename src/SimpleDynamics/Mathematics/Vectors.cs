@@ -97,4 +97,12 @@ public static class Vectors
     /// <summary>|v|² in scalar arithmetic: exactly <see cref="Vector3.LengthSquared"/>, without DPPS (see <see cref="Dot"/>).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal static float LengthSquared(Vector3 v) => v.X * v.X + v.Y * v.Y + v.Z * v.Z;
+
+    /// <summary>|v| in scalar arithmetic: exactly <see cref="Vector3.Length"/>, without DPPS (see <see cref="Dot"/>).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static float Length(Vector3 v) => MathF.Sqrt(LengthSquared(v));
+
+    /// <summary>|a − b| in scalar arithmetic: exactly <see cref="Vector3.Distance(Vector3, Vector3)"/>, without DPPS (see <see cref="Dot"/>).</summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    internal static float Distance(Vector3 a, Vector3 b) => MathF.Sqrt(DistanceSquared(a, b));
 }

@@ -7,8 +7,8 @@ using Xunit;
 namespace SimpleDynamics.Tests.Properties;
 
 /// <summary>
-/// The solver's scalar dot products (<see cref="Vectors.Dot"/>, <see cref="Vectors.DistanceSquared"/>,
-/// <see cref="Vectors.LengthSquared"/>) replace <see cref="Vector3"/>'s in the passes over every contact, and must not
+/// The solver's scalar dot products and lengths (<see cref="Vectors.Dot"/>, <see cref="Vectors.DistanceSquared"/>,
+/// <see cref="Vectors.LengthSquared"/>, <see cref="Vectors.Length"/>, <see cref="Vectors.Distance"/>) replace <see cref="Vector3"/>'s in the passes over every contact, and must not
 /// change a result: the same float as <see cref="Vector3"/>'s, bit for bit, but for the sign of a zero dot product.
 /// Vectors are drawn from every scale a world holds (10⁻⁶ to 10⁴), with components that are zero, of either sign, or
 /// cancel, and from the plane z = 0.
@@ -48,5 +48,9 @@ public class ScalarVectorLaws
                     $"|a − b|² for a = {a:R}, b = {b:R}");
                 Law.Holds(BitConverter.SingleToInt32Bits(Vectors.LengthSquared(a)) == BitConverter.SingleToInt32Bits(a.LengthSquared()),
                     $"|a|² for a = {a:R}");
+                Law.Holds(BitConverter.SingleToInt32Bits(Vectors.Length(a)) == BitConverter.SingleToInt32Bits(a.Length()),
+                    $"|a| for a = {a:R}");
+                Law.Holds(BitConverter.SingleToInt32Bits(Vectors.Distance(a, b)) == BitConverter.SingleToInt32Bits(Vector3.Distance(a, b)),
+                    $"|a − b| for a = {a:R}, b = {b:R}");
             }, seed: 1401, maxTest: 2000);
 }
