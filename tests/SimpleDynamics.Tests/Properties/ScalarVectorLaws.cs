@@ -8,10 +8,10 @@ namespace SimpleDynamics.Tests.Properties;
 
 /// <summary>
 /// The solver's scalar dot products and lengths (<see cref="Vectors.Dot"/>, <see cref="Vectors.DistanceSquared"/>,
-/// <see cref="Vectors.LengthSquared"/>, <see cref="Vectors.Length"/>, <see cref="Vectors.Distance"/>) replace <see cref="Vector3"/>'s in the passes over every contact, and must not
-/// change a result: the same float as <see cref="Vector3"/>'s, bit for bit, but for the sign of a zero dot product.
-/// Vectors are drawn from every scale a world holds (10⁻⁶ to 10⁴), with components that are zero, of either sign, or
-/// cancel, and from the plane z = 0.
+/// <see cref="Vectors.LengthSquared"/>, <see cref="Vectors.Length"/>, <see cref="Vectors.Distance"/>) replace
+/// <see cref="Vector3"/>'s in the passes over every contact and body, and must not change a result: the same float as
+/// <see cref="Vector3"/>'s, bit for bit, but for the sign of a zero dot product. Vectors are drawn from every scale a
+/// world holds (10⁻⁶ to 10⁴), with components that are zero, of either sign, or cancel, and from the plane z = 0.
 /// </summary>
 public class ScalarVectorLaws
 {
