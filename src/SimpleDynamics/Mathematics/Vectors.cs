@@ -73,7 +73,7 @@ public static class Vectors
         // Cross with whichever axis is least parallel to n; z first so that planar normals keep t1 planar.
         Vector3 axis = MathF.Abs(n.Z) < 0.9f ? Vector3.UnitZ : Vector3.UnitX;
         Vector3 across = Vector3.Cross(n, axis);
-        t1 = across / MathF.Sqrt(LengthSquared(across)); // Vector3.Normalize's floats, without DPPS (see Dot)
+        t1 = across / Length(across); // Vector3.Normalize's floats, without DPPS (see Dot)
         t2 = Vector3.Cross(n, t1);
     }
 
