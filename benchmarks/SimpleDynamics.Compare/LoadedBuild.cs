@@ -4,6 +4,7 @@ using System.IO;
 using System.Linq;
 using System.Numerics;
 using System.Reflection;
+using System.Runtime.ExceptionServices;
 using System.Runtime.Loader;
 
 namespace SimpleDynamics.Compare;
@@ -21,7 +22,9 @@ internal sealed class LoadedBuild
     private readonly Func<IEnumerable> _bodies;
     private readonly Func<int> _sweepsThisStep;
 
-    public LoadedBuild(string folder, int bodies, bool planar, int seed)
+    /// <param name="threads">The world's <c>ThreadCount</c>; 1 leaves it alone (a build before threads had none).</param>
+    /// <param name="strips">The solver's <c>Strips</c>; 1 leaves it alone likewise.</param>
+    public LoadedBuild(string folder, int bodies, bool planar, int seed, int threads = 1, int strips = 1)
     {
         string path = Path.Combine(Path.GetFullPath(folder), "SimpleDynamics.dll");
         if (!File.Exists(path))
@@ -42,8 +45,32 @@ internal sealed class LoadedBuild
         PropertyInfo bodiesProperty = world.GetProperty("Bodies")!;
         _bodies = () => (IEnumerable)bodiesProperty.GetValue(_world)!;
         object responder = world.GetProperty("Responder")!.GetValue(_world)!;
+        if (strips != 1)
+        {
+            Set(responder, "Strips", strips);
+        }
+
+        if (threads != 1)
+        {
+            Set(_world, "ThreadCount", threads);
+        }
+
         PropertyInfo? sweeps = responder.GetType().GetProperty("SweepsThisStep", Instance);
         _sweepsThisStep = sweeps is null ? () => 0 : () => (int)sweeps.GetValue(responder)!;
+    }
+
+    private static void Set(object target, string property, int value)
+    {
+        PropertyInfo setting = target.GetType().GetProperty(property)
+            ?? throw new ArgumentException($"this build's {target.GetType().Name} has no {property}.");
+        try
+        {
+            setting.SetValue(target, value);
+        }
+        catch (TargetInvocationException e) when (e.InnerException is not null)
+        {
+            ExceptionDispatchInfo.Capture(e.InnerException).Throw(); // the library's own message, naming the setting
+        }
     }
 
     /// <summary>Velocity sweeps summed over the steps since this was last set to 0, where the build reports them.</summary>

@@ -13,6 +13,8 @@ namespace SimpleDynamics.Compare;
 /// Timings on a shared or two-core machine drift by several per cent over a minute; stepping the two in turn, round
 /// after round, exposes both to the same drift, which separate runs would not. Which build is made first still moves
 /// the ratio by a few per cent, so run it both ways round (A B, then B A) and read the two together.
+/// Given one folder twice and another thread count for B (<c>--threads-b 2 --strips 2</c>), it measures what a second
+/// thread gains on the very same pile: the same build on one thread and on two must end in the same state, bit for bit.
 /// </summary>
 internal static class Program
 {
@@ -31,13 +33,23 @@ internal static class Program
     private static readonly Option<int> s_pour = Whole("--pour", "Steps before timing, to let the pile settle", 600, least: 0);
     private static readonly Option<int> s_rounds = Whole("--rounds", "Rounds, each timing both builds", 16, least: 1);
     private static readonly Option<int> s_steps = Whole("--steps", "Steps per build per round", 60, least: 1);
+    private static readonly Option<int> s_threadsA = Whole("--threads-a", "World.ThreadCount of A's world", 1, least: 1, most: 64);
+    private static readonly Option<int> s_threadsB = Whole("--threads-b", "World.ThreadCount of B's world", 1, least: 1, most: 64);
+    private static readonly Option<int> s_strips = Whole("--strips", "SequentialImpulseSolver.Strips of both worlds (1, 2, 4 or 8): what threads share", 1, least: 1);
 
     private static int Main(string[] args)
     {
         var command = new RootCommand("Steps the same ball pit with two builds of the library in turn and prints B's time over A's.")
         {
-            s_folders, s_bodies, s_3d, s_seed, s_pour, s_rounds, s_steps,
+            s_folders, s_bodies, s_3d, s_seed, s_pour, s_rounds, s_steps, s_threadsA, s_threadsB, s_strips,
         };
+        s_strips.Validators.Add(result =>
+        {
+            if (result.GetValueOrDefault<int>() is not (1 or 2 or 4 or 8))
+            {
+                result.AddError("--strips needs 1, 2, 4 or 8.");
+            }
+        });
         s_folders.Validators.Add(result =>
         {
             foreach (DirectoryInfo folder in result.GetValueOrDefault<DirectoryInfo[]>() ?? [])
@@ -50,27 +62,31 @@ internal static class Program
         });
         command.SetAction(parse => Run(
             parse.GetValue(s_folders)!, parse.GetValue(s_bodies), !parse.GetValue(s_3d), parse.GetValue(s_seed),
-            parse.GetValue(s_pour), parse.GetValue(s_rounds), parse.GetValue(s_steps)));
+            parse.GetValue(s_pour), parse.GetValue(s_rounds), parse.GetValue(s_steps),
+            (parse.GetValue(s_threadsA), parse.GetValue(s_threadsB)), parse.GetValue(s_strips)));
         return command.Parse(args).Invoke();
     }
 
-    private static Option<int> Whole(string name, string description, int fallback, int least)
+    private static Option<int> Whole(string name, string description, int fallback, int least, int most = int.MaxValue)
     {
         var option = new Option<int>(name) { Description = description, HelpName = "N", DefaultValueFactory = _ => fallback };
         option.Validators.Add(result =>
         {
-            if (result.GetValueOrDefault<int>() < least)
+            int value = result.GetValueOrDefault<int>();
+            if (value < least || value > most)
             {
-                result.AddError($"{name} needs a whole number of at least {least}.");
+                result.AddError(most == int.MaxValue
+                    ? $"{name} needs a whole number of at least {least}."
+                    : $"{name} needs a whole number from {least} to {most}.");
             }
         });
         return option;
     }
 
-    private static int Run(DirectoryInfo[] folders, int bodies, bool planar, int seed, int pour, int rounds, int steps)
+    private static int Run(DirectoryInfo[] folders, int bodies, bool planar, int seed, int pour, int rounds, int steps, (int A, int B) threads, int strips)
     {
-        var a = new LoadedBuild(folders[0].FullName, bodies, planar, seed);
-        var b = new LoadedBuild(folders[1].FullName, bodies, planar, seed);
+        var a = new LoadedBuild(folders[0].FullName, bodies, planar, seed, threads.A, strips);
+        var b = new LoadedBuild(folders[1].FullName, bodies, planar, seed, threads.B, strips);
         a.Step(pour, Dt);
         b.Step(pour, Dt);
         bool samePour = a.State().SequenceEqual(b.State());
@@ -94,9 +110,9 @@ internal static class Program
         Array.Sort(ratios);
         bool same = a.State().SequenceEqual(b.State());
         int stepsTimed = rounds * steps;
-        Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"{bodies} {(planar ? "discs (2-D)" : "balls (3-D)")}, seed {seed}, {pour} steps poured, {rounds} rounds of {steps} steps"));
-        Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"A {totalA / stepsTimed:F3} ms a step, {a.Sweeps / (double)stepsTimed:F1} sweeps a step"));
-        Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"B {totalB / stepsTimed:F3} ms a step, {b.Sweeps / (double)stepsTimed:F1} sweeps a step"));
+        Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"{bodies} {(planar ? "discs (2-D)" : "balls (3-D)")}, seed {seed}, {pour} steps poured, {rounds} rounds of {steps} steps, {strips} strip(s) at most"));
+        Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"A {totalA / stepsTimed:F3} ms a step, {a.Sweeps / (double)stepsTimed:F1} sweeps a step, {threads.A} thread(s)"));
+        Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"B {totalB / stepsTimed:F3} ms a step, {b.Sweeps / (double)stepsTimed:F1} sweeps a step, {threads.B} thread(s)"));
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"B / A: median {ratios[rounds / 2]:F3}, rounds {ratios[0]:F3}–{ratios[^1]:F3}"));
         Console.WriteLine(same && samePour
             ? "every body's state the same in A and B, bit for bit, after the pour and at the end"
