@@ -77,19 +77,19 @@ public sealed partial class SequentialImpulseSolver
             Vector3 sumEven = _bandSums[2 * s], sumOdd = _bandSums[2 * s + 1];
             if (even >= 0)
             {
-                diagonal[even] += inverseMass * sumEven.LengthSquared();
+                diagonal[even] += inverseMass * Vectors.LengthSquared(sumEven);
                 residual[even] += (kinematicPushes ? _bandResidualSums[2 * s] : 0) - Vector3D.Dot(velocity, new Vector3D(sumEven));
             }
 
             if (odd >= 0)
             {
-                diagonal[odd] += inverseMass * sumOdd.LengthSquared();
+                diagonal[odd] += inverseMass * Vectors.LengthSquared(sumOdd);
                 residual[odd] += (kinematicPushes ? _bandResidualSums[2 * s + 1] : 0) - Vector3D.Dot(velocity, new Vector3D(sumOdd));
             }
 
             if (even >= 0 && odd >= 0)
             {
-                upper[Math.Min(even, odd)] += inverseMass * Vector3.Dot(sumEven, sumOdd);
+                upper[Math.Min(even, odd)] += inverseMass * Vectors.Dot(sumEven, sumOdd);
             }
         }
     }

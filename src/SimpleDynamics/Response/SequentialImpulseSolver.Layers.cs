@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using SimpleDynamics.Mathematics;
 using System.Runtime.CompilerServices;
 
 namespace SimpleDynamics.Response;
@@ -192,8 +193,8 @@ public sealed partial class SequentialImpulseSolver
     }
 
     private float ContactHeight(ref ContactConstraint c, Vector3 up) => c.IsPlaneContact
-        ? Vector3.Dot(_positions[c.A], up)
-        : 0.5f * Vector3.Dot(_positions[c.A] + _positions[c.B], up);
+        ? Vectors.Dot(_positions[c.A], up)
+        : 0.5f * Vectors.Dot(_positions[c.A] + _positions[c.B], up);
 
     /// <summary>
     /// Makes room for the band sums of every slot, and empties them if a gathering was left unfinished.
@@ -284,7 +285,7 @@ public sealed partial class SequentialImpulseSolver
         {
             // −λ v_n = −λ n · v_A + λ n · v_B: the movable body's own term comes from its sums (BuildBandSystem).
             int mover = movesA ? c.A : c.B;
-            double other = c.NormalImpulse * (double)Vector3.Dot(c.Normal, _bodies[movesA ? c.B : c.A].Linear);
+            double other = c.NormalImpulse * (double)Vectors.Dot(c.Normal, _bodies[movesA ? c.B : c.A].Linear);
             if (other != 0) // zero against the ground and walls
             {
                 _bandResidualSums[2 * mover + (band & 1)] += movesA ? other : -other;

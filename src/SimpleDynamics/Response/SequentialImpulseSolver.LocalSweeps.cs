@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using SimpleDynamics.Mathematics;
 
 namespace SimpleDynamics.Response;
 
@@ -122,8 +123,8 @@ public sealed partial class SequentialImpulseSolver
     {
         ref SolverBody body = ref _bodies[slot];
         float radius = _radii[slot];
-        return Vector3.DistanceSquared(body.Linear, _publishedLinear[slot]) +
-            radius * radius * Vector3.DistanceSquared(body.Angular, _publishedAngular[slot]) > drift2;
+        return Vectors.DistanceSquared(body.Linear, _publishedLinear[slot]) +
+            radius * radius * Vectors.DistanceSquared(body.Angular, _publishedAngular[slot]) > drift2;
     }
 
     /// <summary>
