@@ -82,9 +82,10 @@ public static class Program
 
     /// <summary>
     /// Steps each scene, writing step 0, every K-th step and the last one; then checks the scene's expectation and
-    /// the energy, and reports a broken one as a warning (in the output and on standard error).
+    /// the energy, and reports a broken one as a warning (in the output and on standard error). Public so that a
+    /// project (or a test) can run scenes of its own through the sample's writers and checks.
     /// </summary>
-    private static void Simulate(IReadOnlyList<Scene> scenes, TrajectoryWriter writer, TextWriter stderr)
+    public static void Simulate(IReadOnlyList<Scene> scenes, TrajectoryWriter writer, TextWriter stderr)
     {
         foreach (Scene scene in scenes)
         {
