@@ -1,7 +1,7 @@
 using System;
 using System.Numerics;
-using SimpleDynamics.Mathematics;
 using System.Runtime.CompilerServices;
+using SimpleDynamics.Mathematics;
 
 namespace SimpleDynamics.Response;
 
