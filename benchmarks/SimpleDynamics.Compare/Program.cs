@@ -4,6 +4,8 @@ using System.Globalization;
 using System.CommandLine;
 using System.IO;
 using System.Linq;
+using System.Runtime.ExceptionServices;
+using System.Threading;
 
 namespace SimpleDynamics.Compare;
 
@@ -15,6 +17,9 @@ namespace SimpleDynamics.Compare;
 /// the ratio by a few per cent, so run it both ways round (A B, then B A) and read the two together.
 /// Given one folder twice and another thread count for B (<c>--threads-b 2 --strips 2</c>), it measures what a second
 /// thread gains on the very same pile: the same build on one thread and on two must end in the same state, bit for bit.
+/// With <c>--side-by-side</c> each build steps two copies of its world, A one after the other on this thread, B at the
+/// same time on two threads: given one folder twice, that is what the machine gives two threads at most, the gain no
+/// split of one world across them can beat.
 /// </summary>
 internal static class Program
 {
@@ -36,13 +41,24 @@ internal static class Program
     private static readonly Option<int> s_threadsA = Whole("--threads-a", "World.ThreadCount of A's world", 1, least: 1, most: 64);
     private static readonly Option<int> s_threadsB = Whole("--threads-b", "World.ThreadCount of B's world", 1, least: 1, most: 64);
     private static readonly Option<int> s_strips = Whole("--strips", "SequentialImpulseSolver.Strips of both worlds (1, 2, 4 or 8): what threads share", 1, least: 1);
+    private static readonly Option<bool> s_sideBySide = new("--side-by-side")
+    {
+        Description = "Two copies of each world: A's stepped one after the other, B's at the same time on two threads (one thread each)",
+    };
 
     private static int Main(string[] args)
     {
         var command = new RootCommand("Steps the same ball pit with two builds of the library in turn and prints B's time over A's.")
         {
-            s_folders, s_bodies, s_3d, s_seed, s_pour, s_rounds, s_steps, s_threadsA, s_threadsB, s_strips,
+            s_folders, s_bodies, s_3d, s_seed, s_pour, s_rounds, s_steps, s_threadsA, s_threadsB, s_strips, s_sideBySide,
         };
+        command.Validators.Add(result =>
+        {
+            if (result.GetValue(s_sideBySide) && (result.GetValue(s_threadsA) > 1 || result.GetValue(s_threadsB) > 1))
+            {
+                result.AddError("--side-by-side steps each world on one thread: leave --threads-a and --threads-b at 1.");
+            }
+        });
         s_strips.Validators.Add(result =>
         {
             if (result.GetValueOrDefault<int>() is not (1 or 2 or 4 or 8))
@@ -63,7 +79,7 @@ internal static class Program
         command.SetAction(parse => Run(
             parse.GetValue(s_folders)!, parse.GetValue(s_bodies), !parse.GetValue(s_3d), parse.GetValue(s_seed),
             parse.GetValue(s_pour), parse.GetValue(s_rounds), parse.GetValue(s_steps),
-            (parse.GetValue(s_threadsA), parse.GetValue(s_threadsB)), parse.GetValue(s_strips)));
+            (parse.GetValue(s_threadsA), parse.GetValue(s_threadsB)), parse.GetValue(s_strips), parse.GetValue(s_sideBySide)));
         return command.Parse(args).Invoke();
     }
 
@@ -83,13 +99,17 @@ internal static class Program
         return option;
     }
 
-    private static int Run(DirectoryInfo[] folders, int bodies, bool planar, int seed, int pour, int rounds, int steps, (int A, int B) threads, int strips)
+    private static int Run(
+        DirectoryInfo[] folders, int bodies, bool planar, int seed, int pour, int rounds, int steps, (int A, int B) threads, int strips,
+        bool sideBySide)
     {
         var a = new LoadedBuild(folders[0].FullName, bodies, planar, seed, threads.A, strips);
         var b = new LoadedBuild(folders[1].FullName, bodies, planar, seed, threads.B, strips);
-        a.Step(pour, Dt);
-        b.Step(pour, Dt);
-        bool samePour = a.State().SequenceEqual(b.State());
+        LoadedBuild? twinA = sideBySide ? new LoadedBuild(folders[0].FullName, bodies, planar, seed, 1, strips) : null;
+        LoadedBuild? twinB = sideBySide ? new LoadedBuild(folders[1].FullName, bodies, planar, seed, 1, strips) : null;
+        AtOnce(a, twinA, pour); // the pours are not timed: two at a time where there are two
+        AtOnce(b, twinB, pour);
+        bool samePour = a.State().SequenceEqual(b.State()) && SameAs(twinA, a) && SameAs(twinB, b);
         a.Sweeps = b.Sweeps = 0;
 
         var ratios = new double[rounds];
@@ -98,9 +118,10 @@ internal static class Program
         {
             long start = Stopwatch.GetTimestamp();
             a.Step(steps, Dt);
+            twinA?.Step(steps, Dt); // after A's own: one after the other
             double timeA = Stopwatch.GetElapsedTime(start).TotalMilliseconds;
             start = Stopwatch.GetTimestamp();
-            b.Step(steps, Dt);
+            AtOnce(b, twinB, steps);
             double timeB = Stopwatch.GetElapsedTime(start).TotalMilliseconds;
             ratios[round] = timeB / timeA;
             totalA += timeA;
@@ -108,15 +129,53 @@ internal static class Program
         }
 
         Array.Sort(ratios);
-        bool same = a.State().SequenceEqual(b.State());
+        bool same = a.State().SequenceEqual(b.State()) && SameAs(twinA, a) && SameAs(twinB, b);
         int stepsTimed = rounds * steps;
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"{bodies} {(planar ? "discs (2-D)" : "balls (3-D)")}, seed {seed}, {pour} steps poured, {rounds} rounds of {steps} steps, {strips} strip(s) at most"));
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"A {totalA / stepsTimed:F3} ms a step, {a.Sweeps / (double)stepsTimed:F1} sweeps a step, {threads.A} thread(s)"));
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"B {totalB / stepsTimed:F3} ms a step, {b.Sweeps / (double)stepsTimed:F1} sweeps a step, {threads.B} thread(s)"));
         Console.WriteLine(string.Create(CultureInfo.InvariantCulture, $"B / A: median {ratios[rounds / 2]:F3}, rounds {ratios[0]:F3}–{ratios[^1]:F3}"));
+        if (sideBySide)
+        {
+            Console.WriteLine(string.Create(CultureInfo.InvariantCulture,
+                $"side by side: two copies of a world stepped at once {1 / ratios[rounds / 2]:F2}× as fast as one after the other (median; rounds {1 / ratios[^1]:F2}–{1 / ratios[0]:F2}×), the times per step above being of both copies"));
+        }
+
         Console.WriteLine(same && samePour
-            ? "every body's state the same in A and B, bit for bit, after the pour and at the end"
+            ? $"every body's state the same in {(sideBySide ? "A, B and their copies" : "A and B")}, bit for bit, after the pour and at the end"
             : $"the builds' states differ ({(samePour ? "at the end" : "already after the pour")}): they are not the same physics, and the times compare different piles");
         return 0;
     }
+
+    /// <summary>Steps <paramref name="world"/> and, if there is one, <paramref name="twin"/> at the same time on a second thread.</summary>
+    private static void AtOnce(LoadedBuild world, LoadedBuild? twin, int steps)
+    {
+        if (twin is null)
+        {
+            world.Step(steps, Dt);
+            return;
+        }
+
+        Exception? failure = null;
+        var other = new Thread(() =>
+        {
+            try
+            {
+                twin.Step(steps, Dt);
+            }
+            catch (Exception e)
+            {
+                failure = e;
+            }
+        });
+        other.Start();
+        world.Step(steps, Dt);
+        other.Join();
+        if (failure is not null)
+        {
+            ExceptionDispatchInfo.Capture(failure).Throw();
+        }
+    }
+
+    private static bool SameAs(LoadedBuild? twin, LoadedBuild world) => twin is null || twin.State().SequenceEqual(world.State());
 }
