@@ -9,11 +9,13 @@ namespace SimpleDynamics.Response;
 /// (see <see cref="SweepStrips"/>). Those are the passes over every contact and the local sweeps over the contacts
 /// still changing (SequentialImpulseSolver.LocalSweeps.cs), which a deep pile that stirs spends most of its sweeps in,
 /// and the layer correction's passes (SequentialImpulseSolver.Layers.cs): its gathering sweep, and the building of its
-/// band system from each strip's bodies and the moving of them by its factors.
+/// band system from each strip's bodies and the moving of them by its factors. The threads share the strips of a pass
+/// as <see cref="ShareQueue"/> hands them out: with more strips than threads, a thread that is done takes over the
+/// strips another has not begun.
 /// </summary>
 public sealed partial class SequentialImpulseSolver
 {
-    /// <summary>Floats between two threads' results: 64 bytes, so that each thread writes its own cache line.</summary>
+    /// <summary>Floats between two strips' results: 64 bytes, so that each thread writes its own cache line.</summary>
     private const int Padding = 16;
 
     private readonly SweepStrips _strips = new();
@@ -24,8 +26,9 @@ public sealed partial class SequentialImpulseSolver
     private int[] _bodyScratch = new int[InitialCapacity]; // where SweepStrips.Group puts the bodies in strips
     private int[] _contactScratch = new int[InitialCapacity]; // and the contacts
     private StripJob? _stripJob;
-    private float[] _stripResults = new float[Padding]; // per thread, and the seam: what its part of a pass measured
-    private int[] _stripCounts = new int[Padding]; // the same, for what a local sweep counted (SweepMarkedRange)
+    private readonly float[] _stripResults = new float[(SweepStrips.MaxStrips + 1) * Padding]; // per strip, and the seams: what its part of a pass measured
+    private readonly int[] _stripCounts = new int[(SweepStrips.MaxStrips + 1) * Padding]; // the same, for what a local sweep counted (SweepMarkedRange)
+    private readonly ShareQueue _stripQueue = new(SweepStrips.MaxStrips); // which thread sweeps which strip, in a pass in strips
     private int _resultSlots; // the results the last pass wrote
 
     /// <summary>The cut of the step begun last, for tests (its <see cref="SweepStrips.ContactsPerStrip"/> may be lowered).</summary>
@@ -85,7 +88,7 @@ public sealed partial class SequentialImpulseSolver
         if (_substepInStrips)
         {
             RunInStrips(pass);
-            _resultSlots = _threads!.Threads + 1;
+            _resultSlots = _strips.Count + 1;
         }
         else
         {
@@ -95,21 +98,20 @@ public sealed partial class SequentialImpulseSolver
     }
 
     /// <summary>
-    /// Runs <paramref name="pass"/> over every active contact: the strips on every thread (thread t takes an equal,
-    /// contiguous share of them), then the seam contacts on this one.
+    /// Runs <paramref name="pass"/> over every active contact: the strips on every thread (see <see cref="RunStrips"/>),
+    /// then the seam contacts on this one.
     /// </summary>
     private void RunInStrips(StripPass pass)
     {
-        int threads = _threads!.Threads;
-        Buffers.EnsureCapacity(ref _stripResults, (threads + 1) * Padding);
-        Buffers.EnsureCapacity(ref _stripCounts, (threads + 1) * Padding);
+        int strips = _strips.Count;
+        _stripQueue.Reset(strips);
         _stripJob ??= new StripJob(this);
         _stripJob.Pass = pass;
-        _threads.Run(_stripJob);
-        RunRange(threads, _activeStart[_strips.Count], _activeCount, pass);
+        _threads!.Run(_stripJob);
+        RunRange(strips, _activeStart[strips], _activeCount, pass);
     }
 
-    /// <summary>The largest of what the last pass measured in slot <paramref name="result"/> of each thread's results (and the seam's).</summary>
+    /// <summary>The largest of what the last pass measured in slot <paramref name="result"/> of each strip's results (and the seams').</summary>
     private float LargestOfPass(int result)
     {
         float largest = 0;
@@ -121,22 +123,26 @@ public sealed partial class SequentialImpulseSolver
         return largest;
     }
 
-    /// <summary>Thread <paramref name="thread"/>'s share of the strips.</summary>
+    /// <summary>
+    /// Thread <paramref name="thread"/>'s part of a pass in strips: the strips that <see cref="_stripQueue"/> gives it,
+    /// its own share first, then any of the others' still waiting. A pile that stirs in one place makes one strip's
+    /// local sweeps far longer than the others'; a thread that is done takes over the strips not yet begun. Strips share
+    /// no moving body, so which thread sweeps a strip, and when, changes nothing in the result.
+    /// </summary>
     private void RunStrips(int thread, int threads, StripPass pass)
     {
-        int strips = _strips.Count;
-        int first = thread * strips / threads, end = (thread + 1) * strips / threads;
-        if (pass is StripPass.BuildBands or StripPass.ApplyBands)
+        int cursor = 0;
+        while (_stripQueue.TryTake(thread, threads, ref cursor, out int strip))
         {
-            for (int strip = first; strip < end; strip++)
+            if (pass is StripPass.BuildBands or StripPass.ApplyBands)
             {
                 BodyShare(pass, strip); // over the strip's bodies, not its contacts
             }
-
-            return;
+            else
+            {
+                RunRange(strip, _activeStart[strip], _activeStart[strip + 1], pass); // its results in the strip's slot
+            }
         }
-
-        RunRange(thread, _activeStart[first], _activeStart[end], pass);
     }
 
     /// <summary>
