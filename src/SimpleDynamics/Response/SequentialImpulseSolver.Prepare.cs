@@ -155,15 +155,36 @@ public sealed partial class SequentialImpulseSolver
     /// impulses are dropped. The solved contacts are listed, in order, for the sweeps: in a scene of fast
     /// bodies most contacts are only speculative (the smash solves about one in ten), and the sweeps then visit only those solved.
     /// </summary>
+    /// <remarks>
+    /// Each contact is measured on its own, so a pile whose last substep ran in strips (it is stirring) is measured in
+    /// strips on the world's threads (SequentialImpulseSolver.Strips.cs); the list comes out the same.
+    /// </remarks>
     private void MeasureConstraints(ReadOnlySpan<Contact> contacts)
+    {
+        Buffers.EnsureCapacity(ref _active, contacts.Length);
+        bool inStrips = _substepInStrips && _threads is not null && _strips.Count > 1; // the last substep's
+        _substepInStrips = false;
+        _bandsAssigned = false;
+        if (inStrips)
+        {
+            MeasureInStrips(contacts);
+            return;
+        }
+
+        _activeCount = MeasureRange(contacts, 0, contacts.Length);
+        FindStripsInActive();
+    }
+
+    /// <summary>
+    /// Measures contacts [<paramref name="start"/>, <paramref name="end"/>) (see <see cref="MeasureConstraints"/>) and
+    /// lists those solved, in order, in <see cref="_active"/> from place <paramref name="start"/> on; returns how many.
+    /// </summary>
+    private int MeasureRange(ReadOnlySpan<Contact> contacts, int start, int end)
     {
         float weight = 0.7f * _gravity.Length(); // see ContactConstraint.CarriesWeight (never, without gravity)
         bool noGravity = _gravity == Vector3.Zero;
-        Buffers.EnsureCapacity(ref _active, contacts.Length);
-        _activeCount = 0;
-        _substepInStrips = false;
-        _bandsAssigned = false;
-        for (int k = 0; k < contacts.Length; k++)
+        int listed = start;
+        for (int k = start; k < end; k++)
         {
             ref ContactConstraint c = ref _constraints[k];
             ref SolverBody a = ref _bodies[c.A];
@@ -202,7 +223,7 @@ public sealed partial class SequentialImpulseSolver
                 continue;
             }
 
-            _active[_activeCount++] = k;
+            _active[listed++] = k;
 
             // Tangents with t₂ = n × t₁, so that r_A × t₁ = −ρ_A t₂, r_A × t₂ = ρ_A t₁ (and for B with +ρ_B): the spins
             // I⁻¹ (r × t) a unit friction impulse causes (eq. 15) and the denominators of eq. 16 along t need no cross
@@ -247,7 +268,7 @@ public sealed partial class SequentialImpulseSolver
             ClampFriction(ref c);
         }
 
-        FindStripsInActive();
+        return listed - start;
     }
 
     private static bool IsIdentity(ReadOnlySpan<int> order)

@@ -1,4 +1,5 @@
 using System;
+using SimpleDynamics.Collision;
 using SimpleDynamics.Threading;
 
 namespace SimpleDynamics.Response;
@@ -40,6 +41,7 @@ public sealed partial class SequentialImpulseSolver
     /// <summary>The passes that run in strips.</summary>
     private enum StripPass
     {
+        Measure,
         WarmStart,
         Sweep,
         MeasuredSweep,
@@ -103,12 +105,40 @@ public sealed partial class SequentialImpulseSolver
     /// </summary>
     private void RunInStrips(StripPass pass)
     {
-        int strips = _strips.Count;
-        _stripQueue.Reset(strips);
+        RunStripsOnThreads(pass);
+        RunRange(_strips.Count, _activeStart[_strips.Count], _activeCount, pass);
+    }
+
+    /// <summary>Runs <paramref name="pass"/> over the strips on every thread (see <see cref="RunStrips"/>), and returns when all are done.</summary>
+    private void RunStripsOnThreads(StripPass pass)
+    {
+        _stripQueue.Reset(_strips.Count);
         _stripJob ??= new StripJob(this);
         _stripJob.Pass = pass;
         _threads!.Run(_stripJob);
-        RunRange(strips, _activeStart[strips], _activeCount, pass);
+    }
+
+    /// <summary>
+    /// <see cref="MeasureConstraints"/> in strips: each strip's contacts on the threads, then the seams' (and any the
+    /// impact pass added in this step) on this one. Each group lists its solved contacts in <see cref="_active"/> where
+    /// its own contacts begin, and the lists are then moved together, group after group: the same list, in storage
+    /// order, as one pass over every contact makes.
+    /// </summary>
+    private void MeasureInStrips(ReadOnlySpan<Contact> contacts)
+    {
+        int strips = _strips.Count;
+        RunStripsOnThreads(StripPass.Measure);
+        _stripCounts[strips * Padding + 2] = MeasureRange(contacts, _contactStart[strips], contacts.Length);
+        int listed = 0;
+        for (int g = 0; g <= strips; g++)
+        {
+            int count = _stripCounts[g * Padding + 2];
+            Array.Copy(_active, _contactStart[g], _active, listed, count); // down, or in place: never over a list still to move
+            _activeStart[g] = listed;
+            listed += count;
+        }
+
+        _activeCount = listed;
     }
 
     /// <summary>The largest of what the last pass measured in slot <paramref name="result"/> of each strip's results (and the seams').</summary>
@@ -137,6 +167,10 @@ public sealed partial class SequentialImpulseSolver
             if (pass is StripPass.BuildBands or StripPass.ApplyBands)
             {
                 BodyShare(pass, strip); // over the strip's bodies, not its contacts
+            }
+            else if (pass == StripPass.Measure)
+            {
+                _stripCounts[strip * Padding + 2] = MeasureRange(_step!.Contacts.Contacts, _contactStart[strip], _contactStart[strip + 1]);
             }
             else
             {
