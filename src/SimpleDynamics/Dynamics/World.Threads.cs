@@ -17,8 +17,8 @@ public sealed partial class World
     /// (<see cref="Response.SequentialImpulseSolver.Strips"/>, off by default: set it to the thread count): it then
     /// sweeps a pile of at least 8,192 contacts strip after strip, then the contacts between strips (see SweepStrips.cs),
     /// and threads sweep the strips at once. Only the velocity passes of substeps that need more than one sweep are
-    /// shared (a landing or stirring pile); a smaller pile, a settled one, and every other stage of the step run on the
-    /// caller's thread.
+    /// shared (a landing or stirring pile), and the measuring of the contacts in the substep after such a one; a smaller
+    /// pile, a settled one, and every other stage of the step run on the caller's thread.
     /// </summary>
     /// <remarks>
     /// Setting a larger count starts the workers; setting 1 stops them, as does the world being collected. During a

@@ -105,9 +105,8 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
     /// The strips are swept one after another, each bottom-up, then the contacts between them; the result is the same,
     /// bit for bit, on any number of threads, but it is not the result without strips: support crosses a cut a sweep
     /// late, and a deep pile needs more sweeps to settle (SweepStrips.cs). Set it to the thread count for a world that
-    /// steps on several threads, or to twice that: a thread that is done with its strips then takes over one another
-    /// has not begun, which evens out a pile that stirs in one place (benchmarks/README.md), at the price of more seams.
-    /// With 1 the world's threads have nothing to share.
+    /// steps on several threads; with 1 the world's threads have nothing to share. With more strips than threads, a
+    /// thread that is done with its own takes over those another has not begun, but every cut costs sweeps.
     /// </summary>
     /// <exception cref="ArgumentOutOfRangeException">The value is not 1, 2, 4 or 8; nothing changes.</exception>
     public int Strips
