@@ -41,10 +41,10 @@ internal sealed class ShareQueue
     {
         int count = _count;
         int first = thread * count / threads, end = (thread + 1) * count / threads;
+        int own = end - first, above = count - end; // its own shares, and the others' after them
         while (cursor < count)
         {
             int place = cursor++;
-            int own = end - first, above = count - end;
             share = place < own ? first + place // its own part, in order
                 : place - own < above ? count - 1 - (place - own) // then the others', from the last down
                 : first - 1 - (place - own - above);
