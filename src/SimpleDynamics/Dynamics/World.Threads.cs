@@ -16,8 +16,9 @@ public sealed partial class World
     /// count. The default solver shares its velocity sweeps when it cuts a pile into strips
     /// (<see cref="Response.SequentialImpulseSolver.Strips"/>, off by default: set it to the thread count): it then
     /// sweeps a pile of at least 8,192 contacts strip after strip, then the contacts between strips (see SweepStrips.cs),
-    /// and threads sweep the strips at once. Only the velocity passes of substeps that need more than one sweep are
-    /// shared (a landing or stirring pile), and the measuring of the contacts in the substep after such a one; a smaller
+    /// and threads sweep the strips at once. Only the velocity and position passes of substeps that need more than one
+    /// velocity sweep are shared (a landing or stirring pile), and the measuring of the contacts in the substep after
+    /// such a one; a smaller
     /// pile, a settled one, and every other stage of the step run on the caller's thread.
     /// </summary>
     /// <remarks>

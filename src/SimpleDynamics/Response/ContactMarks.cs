@@ -106,6 +106,19 @@ internal sealed class ContactMarks
     }
 
     /// <summary>
+    /// <see cref="MarkForNext"/> for a sweep that threads share (see <see cref="MarkAroundShared"/>): sets the bit
+    /// atomically and counts it in <paramref name="markedForNext"/> if it was not set.
+    /// </summary>
+    public void MarkForNextShared(int position, ref int markedForNext)
+    {
+        ulong bit = 1UL << (position & 63);
+        if ((Or(ref _next[position >> 6], bit) & bit) == 0)
+        {
+            markedForNext++;
+        }
+    }
+
+    /// <summary>
     /// <see cref="TryTake"/> within positions [<paramref name="start"/>, <paramref name="end"/>) for a sweep that
     /// threads share, from the thread's own cursor <paramref name="word"/> (begin it at start / 64).
     /// </summary>

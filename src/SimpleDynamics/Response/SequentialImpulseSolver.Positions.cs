@@ -25,6 +25,9 @@ namespace SimpleDynamics.Response;
 /// be visited again) do the later sweeps keep track: a pile still landing moves most of its bodies, and full sweeps
 /// serve it at less cost. The last substep sweeps every contact, so that a step ends within the slop exactly as full
 /// sweeps end it (the world laws hold nobody deeper than the slop at the end of every step).</para>
+/// <para>Each sweep runs in strips on the world's threads when the substep's velocity passes did, with the result of
+/// one thread (SequentialImpulseSolver.PositionSweeps.cs); the walk from what cannot move and the residual sweeps that
+/// follow run on the caller's thread.</para>
 /// </remarks>
 public sealed partial class SequentialImpulseSolver
 {
@@ -70,19 +73,11 @@ public sealed partial class SequentialImpulseSolver
 
         // The first sweep visits every contact, and marks only those it leaves deep; what it moved is looked at after
         // it, so that a pile still landing, which moves most of its bodies, pays for no tracking.
-        for (int k = 0; k < count; k++)
-        {
-            CorrectPositionAt(k, shock: false, _correctionFactor, markSelf: tracking, markBodies: false);
-        }
-
+        SweepPositions(PositionSweep.First, tracking, count);
         tracking = tracking && MarkAfterFirstSweep(count, slots);
         for (int iteration = 1; iteration < _positionIterations; iteration++)
         {
-            for (int k = tracking ? NextMarked() : 0; k < count; k = tracking ? NextMarked() : k + 1)
-            {
-                CorrectPositionAt(k, shock: false, _correctionFactor, tracking, tracking);
-            }
-
+            SweepPositions(PositionSweep.Later, tracking, count);
             if (tracking)
             {
                 _positionMarks.NextSweep();
@@ -94,15 +89,7 @@ public sealed partial class SequentialImpulseSolver
         // gravity, is corrected in full, split by inverse mass.
         // A settled pile corrects next to nothing here; a jam against a wall corrects a sideways contact by much more,
         // and only then can the walk from what cannot move have anything to do.
-        bool sidewaysCorrected = false, corrected = false;
-        for (int k = tracking ? NextMarked() : 0; k < count; k = tracking ? NextMarked() : k + 1)
-        {
-            ref ContactConstraint c = ref _constraints[k];
-            float correction = CorrectPositionAt(k, shock: c.CarriesWeight, factor: 1f, markSelf: false, markBodies: tracking);
-            sidewaysCorrected |= !c.CarriesWeight && correction > 0.01f * _slop;
-            corrected |= correction > 0.01f * _slop;
-        }
-
+        SweepPositions(PositionSweep.Last, tracking, count, out bool sidewaysCorrected, out bool corrected);
         if (sidewaysCorrected)
         {
             PropagateFromAnchors(count, slots); // see SequentialImpulseSolver.Anchoring.cs
@@ -125,9 +112,6 @@ public sealed partial class SequentialImpulseSolver
         }
     }
 
-    /// <summary>The next contact marked for this position sweep, or int.MaxValue when none is left.</summary>
-    private int NextMarked() => _positionMarks.TryTake(out int k) ? k : int.MaxValue;
-
     /// <summary>
     /// After the first sweep: whether the later ones may visit only what can still change, and if so marks for the
     /// next sweep, besides the contacts the first left deep, every contact of each body it moved by more than the drift
@@ -149,59 +133,14 @@ public sealed partial class SequentialImpulseSolver
         }
 
         ListContactsOfBodies(count, slots);
+        int unused = 0;
         for (int s = 1; s < slots && _positionMarks.MarkedForNext <= count / 4; s++)
         {
-            PublishPosition(s, int.MaxValue, drift); // before the contact at int.MaxValue: all of them, for the next sweep
+            PublishPosition(s, int.MaxValue, drift, shared: false, ref unused); // before the contact at int.MaxValue: all of them, for the next sweep
         }
 
         _positionMarks.NextSweep();
         return _positionMarks.MarkedForNext <= count / 4;
-    }
-
-    /// <summary>
-    /// <see cref="CorrectPosition"/> for contact <paramref name="k"/>. With <paramref name="markSelf"/>, marks the
-    /// contact for the next sweep if the correction leaves it deeper than the slop by the drift allowed or more; with
-    /// <paramref name="markBodies"/>, marks the contacts of each body the correction has moved by more than that since
-    /// it was last published, for this sweep (after k) or the next (before k).
-    /// </summary>
-    private float CorrectPositionAt(int k, bool shock, float factor, bool markSelf, bool markBodies)
-    {
-        PositionVisitsThisStep++;
-        ref ContactConstraint c = ref _constraints[k];
-        float correction = CorrectPosition(ref c, shock, factor, out float excess);
-        if (correction > 0)
-        {
-            float drift = PositionDrift * _slop;
-            if (markSelf && excess - correction >= drift)
-            {
-                _positionMarks.MarkForNext(k);
-            }
-
-            if (markBodies && (shock ? c.AIsUpper : _bodies[c.A].InverseMass > 0))
-            {
-                PublishPosition(c.A, k, drift);
-            }
-
-            if (markBodies && (shock ? !c.AIsUpper : _bodies[c.B].InverseMass > 0))
-            {
-                PublishPosition(c.B, k, drift);
-            }
-        }
-
-        return correction;
-    }
-
-    /// <summary>
-    /// If the body in <paramref name="slot"/> has moved by more than <paramref name="drift"/> since its contacts last
-    /// saw it, publishes its position and marks its contacts around contact <paramref name="k"/>.
-    /// </summary>
-    private void PublishPosition(int slot, int k, float drift)
-    {
-        if (Vectors.DistanceSquared(_positions[slot], _publishedPositions[slot]) > drift * drift)
-        {
-            _publishedPositions[slot] = _positions[slot];
-            _positionMarks.MarkAround(_positionContactsOfBodies.Of(slot), k);
-        }
     }
 
     /// <summary>Lists each body's contacts, once a step (and again if the impact pass has added contacts since).</summary>
@@ -285,8 +224,16 @@ public sealed partial class SequentialImpulseSolver
     /// <summary>Pushes the contact's bodies apart along the normal by <paramref name="correction"/>, split by the inverse masses given.</summary>
     private void Separate(ref ContactConstraint c, Vector3 normal, float correction, float inverseMassA, float inverseMassB)
     {
+        // A body that does not move is not written: threads sweeping strips at once share the ground and the walls.
         float share = correction / (inverseMassA + inverseMassB);
-        _positions[c.A] += normal * (share * inverseMassA);
-        _positions[c.B] -= normal * (share * inverseMassB);
+        if (inverseMassA > 0)
+        {
+            _positions[c.A] += normal * (share * inverseMassA);
+        }
+
+        if (inverseMassB > 0)
+        {
+            _positions[c.B] -= normal * (share * inverseMassB);
+        }
     }
 }

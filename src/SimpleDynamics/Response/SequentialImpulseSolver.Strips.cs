@@ -10,7 +10,8 @@ namespace SimpleDynamics.Response;
 /// (see <see cref="SweepStrips"/>). Those are the passes over every contact and the local sweeps over the contacts
 /// still changing (SequentialImpulseSolver.LocalSweeps.cs), which a deep pile that stirs spends most of its sweeps in,
 /// and the layer correction's passes (SequentialImpulseSolver.Layers.cs): its gathering sweep, and the building of its
-/// band system from each strip's bodies and the moving of them by its factors. The threads share the strips of a pass
+/// band system from each strip's bodies and the moving of them by its factors; and the position sweeps of such a substep
+/// (SequentialImpulseSolver.PositionSweeps.cs). The threads share the strips of a pass
 /// as <see cref="ShareQueue"/> hands them out: with more strips than threads, a thread that is done takes over the
 /// strips another has not begun.
 /// </summary>
@@ -50,6 +51,7 @@ public sealed partial class SequentialImpulseSolver
         SweepWithBands,
         BuildBands,
         ApplyBands,
+        Positions,
     }
 
     /// <summary>
@@ -171,6 +173,10 @@ public sealed partial class SequentialImpulseSolver
             else if (pass == StripPass.Measure)
             {
                 _stripCounts[strip * Padding + 2] = MeasureRange(_step!.Contacts.Contacts, _contactStart[strip], _contactStart[strip + 1]);
+            }
+            else if (pass == StripPass.Positions)
+            {
+                CorrectPositionRange(strip, _contactStart[strip], _contactStart[strip + 1], shared: true); // SequentialImpulseSolver.PositionSweeps.cs
             }
             else
             {

@@ -32,7 +32,7 @@ public class ThreadTests
     public void A_pile_in_strips_steps_bit_for_bit_alike_on_one_to_four_threads(bool planar, int count)
     {
         World[] worlds = Enumerable.Range(1, 4).Select(threads => Pit(planar, count, threads)).ToArray();
-        int cutSteps = 0, seams = 0, localSweeps = 0;
+        int cutSteps = 0, seams = 0, localSweeps = 0, positionSweeps = 0;
         try
         {
             for (int step = 1; step <= Steps; step++)
@@ -48,6 +48,7 @@ public class ThreadTests
                     cutSteps++;
                     seams += solver.SeamContacts;
                     localSweeps += solver.LocalSweepsThisStep; // shared by the threads in a cut step (SweepMarkedRange)
+                    positionSweeps += ((SequentialImpulseSolver)worlds[1].Responder).PositionSweepsInStripsThisStep; // on 2 threads (CorrectPositionRange)
                 }
 
                 for (int w = 1; w < worlds.Length; w++)
@@ -65,10 +66,11 @@ public class ThreadTests
             }
         }
 
-        _output.WriteLine($"{cutSteps} of {Steps} steps cut into strips, {seams / (double)Math.Max(cutSteps, 1):F0} seam contacts a step, {localSweeps} local sweeps in them");
+        _output.WriteLine($"{cutSteps} of {Steps} steps cut into strips, {seams / (double)Math.Max(cutSteps, 1):F0} seam contacts a step, {localSweeps} local sweeps and {positionSweeps} position sweeps in strips in them");
         Assert.True(cutSteps > Steps / 2, $"only {cutSteps} steps were cut into strips");
         Assert.True(seams > 0, "no contact lay across a cut");
         Assert.True(localSweeps > 0, "no local sweep ran in a cut step");
+        Assert.True(positionSweeps > 0, "no position sweep ran in strips");
     }
 
     [Fact]
