@@ -122,11 +122,11 @@ public sealed partial class SequentialImpulseSolver
 
         if (_bandCount < 2)
         {
-            return Sweep() <= _convergenceTolerance;
+            return Sweep() <= SettledTolerance;
         }
 
         PrepareBandSums();
-        bool converged = Sweep(gatherBands: true) <= _convergenceTolerance;
+        bool converged = Sweep(gatherBands: true) <= SettledTolerance;
         bool formed = LargestOfPass(3) == 0;
         if (converged || !formed)
         {

@@ -75,7 +75,7 @@ public sealed partial class SequentialImpulseSolver
         converged = false;
         int slots = _step!.Bodies.Length + 1;
         float speedScale = _gravity.Length() * _step.SubstepLength;
-        float drift = 0.25f * _convergenceTolerance * speedScale;
+        float drift = 0.25f * SettledTolerance * speedScale;
         int changed = 0;
         for (int s = 1; s < slots; s++)
         {
@@ -96,7 +96,7 @@ public sealed partial class SequentialImpulseSolver
 
         for (int sweep = 1; sweep <= budget; sweep++)
         {
-            if (SweepMarked(drift * drift) <= _convergenceTolerance * speedScale)
+            if (SweepMarked(drift * drift) <= SettledTolerance * speedScale)
             {
                 converged = true;
                 if (MeasureResidualAfterLocalSweeps)

@@ -19,6 +19,7 @@ public sealed partial class SequentialImpulseSolver
     private int _activeCount;
     private int _prepared;
     private int _extraSweeps; // this step's budget of extra sweeps per substep (see ExtraSweepsFor)
+    private float _pileLayers; // this step's pile depth in bodies (PileMeasure), for the first sweep's test (SolvedTolerance)
 
     /// <summary>The extra sweeps per substep the last step began could spend (see <see cref="DeepPileLayers"/>), for tests.</summary>
     internal int ExtraSweepBudget => _extraSweeps;
@@ -56,6 +57,7 @@ public sealed partial class SequentialImpulseSolver
 
         _extraSweeps = ExtraSweepsFor(pile.Layers);
         _meanDiameter = pile.MeanDiameter;
+        _pileLayers = pile.Layers;
     }
 
     // The most a deep pile's budget may grow: 28 × ExtraIterations (224 sweeps at the default) covers the

@@ -43,6 +43,53 @@ public sealed partial class SequentialImpulseSolver
     private const float SolvedFraction = 0.25f;
 
     /// <summary>
+    /// The depth, in bodies, up to which a pile's first sweep counts it solved within <see cref="SolvedFraction"/> of
+    /// the tolerance; in a deeper pile the allowance falls with the depth (see <see cref="SolvedTolerance"/>).
+    /// </summary>
+    /// <remarks>
+    /// What the first sweep leaves, each contact up a pile's column may leave, and the upper bodies sink by the sum; so
+    /// the allowance per contact falls in proportion to the depth beyond this one, keeping the sum that of a pile this
+    /// deep. Measured on 2-D pits, sleeping off, with <see cref="SettlingFraction"/>: the 4,000-disc pile, 56 deep
+    /// (<see cref="PileMeasure"/>), lies still at 4 sweeps a step with a quarter, and spends 26 a step with an eighth;
+    /// the 16,000-disc pile, 110 deep, came to rest in none of three pours with a quarter, and in each with about an
+    /// eighth (benchmarks/README.md, twentieth session).
+    /// </remarks>
+    private const float SolvedDepth = 56f;
+
+    /// <summary>
+    /// The largest change (on the scale of <see cref="Sweep"/>'s result) with which a substep's first sweep finds the
+    /// contacts already solved, so that no other follows: <see cref="SolvedFraction"/> of the tolerance, and under
+    /// gravity, in a pile deeper than <see cref="SolvedDepth"/> bodies, that times <see cref="SolvedDepth"/> / depth.
+    /// </summary>
+    private float SolvedTolerance => _gravity != Vector3.Zero && _pileLayers > SolvedDepth
+        ? SolvedFraction * _convergenceTolerance * (SolvedDepth / _pileLayers)
+        : SolvedFraction * _convergenceTolerance;
+
+    /// <summary>
+    /// Under gravity, the fraction of the convergence tolerance that the sweeps after a substep's first, and the shock
+    /// pass, must meet (see <see cref="SettledTolerance"/>).
+    /// </summary>
+    /// <remarks>
+    /// A contact left approaching at the tolerance lets its upper body sink that much more each substep, and in a pile
+    /// those sinkings add up from the floor to the top. Held to the tolerance itself, the 16,000-disc 2-D pit (110
+    /// deep, sleeping off) never came to rest: its packing crept and slumped, each slump unsettled thousands of
+    /// contacts, and steps 901–1,200 of three pours (seeds 1–3) spent 250–570 sweeps a step. Held to half, with the
+    /// first sweep's test falling with the depth (<see cref="SolvedDepth"/>), the pours came to rest (measured per
+    /// pour in benchmarks/README.md, twentieth session) at the same largest overlap, 0.50 mm. Each part alone was not
+    /// enough: half for the sweeps after the first, or an eighth for the first sweep, left two pours of two stirring,
+    /// and half for those and the shock pass, one. A quarter of the tolerance throughout was too strict for the
+    /// budget: the seed-1 pour still stirred at step 650, spending all its sweeps.
+    /// </remarks>
+    private const float SettlingFraction = 0.5f;
+
+    /// <summary>
+    /// The tolerance, on the scale of <see cref="Sweep"/>'s result, at which the sweeps after a substep's first have
+    /// converged: under gravity <see cref="SettlingFraction"/> of <see cref="ConvergenceTolerance"/>, without it the
+    /// tolerance itself.
+    /// </summary>
+    private float SettledTolerance => _gravity != Vector3.Zero ? SettlingFraction * _convergenceTolerance : _convergenceTolerance;
+
+    /// <summary>
     /// <see cref="VelocityIterations"/> Gauss–Seidel sweeps over every contact, bottom-up, then up to
     /// <see cref="ExtraIterations"/> more while the last one has not converged; only one when the first finds the
     /// contacts already solved.
@@ -54,14 +101,14 @@ public sealed partial class SequentialImpulseSolver
         // sweep a substep). Otherwise only the last fixed sweep's convergence decides whether extra ones follow; those
         // between need no measuring.
         float change = Sweep();
-        if (change <= SolvedFraction * _convergenceTolerance)
+        if (change <= SolvedTolerance)
         {
             return;
         }
 
         SplitSubstep(); // more sweeps follow: worth sharing among threads (see _substepInStrips)
 
-        bool converged = _velocityIterations == 1 && change <= _convergenceTolerance;
+        bool converged = _velocityIterations == 1 && change <= SettledTolerance;
         bool local = _extraSweeps > 0 && _gravity != Vector3.Zero && _velocityIterations > 1; // see SequentialImpulseSolver.LocalSweeps.cs
         for (int iteration = 1; iteration < _velocityIterations; iteration++)
         {
@@ -76,7 +123,7 @@ public sealed partial class SequentialImpulseSolver
                     RememberVelocities(); // what the last fixed sweep starts from, to see which bodies it changed
                 }
 
-                converged = Sweep() <= _convergenceTolerance;
+                converged = Sweep() <= SettledTolerance;
             }
         }
 
@@ -92,7 +139,7 @@ public sealed partial class SequentialImpulseSolver
         {
             converged = CorrectsLayersAfter(extra)
                 ? SweepAndCorrectLayers() // a deep pile's smooth error, which sweeps carry only a few layers (see LayerCorrection)
-                : Sweep() <= _convergenceTolerance;
+                : Sweep() <= SettledTolerance;
         }
 
         Debug.Assert(!_bandScalePending, "a layer correction is always followed by a sweep, which scales its impulses");
@@ -253,7 +300,7 @@ public sealed partial class SequentialImpulseSolver
     /// vertical) and still approaches because its upper body moves down into the lower one is stopped by slowing the
     /// upper body alone, as if the lower one, already final, were immovable. The upper body is slowed at most to rest
     /// along the normal, never thrown up, so this only ever removes kinetic energy. Returns whether it slowed any body
-    /// by more than the convergence tolerance (see <see cref="ConvergenceTolerance"/>).
+    /// by more than the tolerance the sweeps converged to (see <see cref="SettledTolerance"/>).
     /// </summary>
     /// <remarks>
     /// A correction along an inclined normal also turns the upper body sideways, into the neighbours whose contacts
@@ -271,8 +318,8 @@ public sealed partial class SequentialImpulseSolver
         return LargestOfPass(0) > 0;
     }
 
-    /// <summary>The slowing that counts as a change for <see cref="PropagateShock"/>: the convergence tolerance of g h.</summary>
-    private float ShockTolerance() => _convergenceTolerance * _gravity.Length() * _step!.SubstepLength;
+    /// <summary>The slowing that counts as a change for <see cref="PropagateShock"/>: the sweeps' tolerance of g h (<see cref="SettledTolerance"/>).</summary>
+    private float ShockTolerance() => SettledTolerance * _gravity.Length() * _step!.SubstepLength;
 
     /// <summary>Shock propagation at one contact (see <see cref="PropagateShock"/>): returns how much it slowed the upper body.</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)] // in the shock pass's loop
