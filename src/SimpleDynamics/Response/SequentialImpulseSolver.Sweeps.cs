@@ -51,8 +51,9 @@ public sealed partial class SequentialImpulseSolver
     /// the allowance per contact falls in proportion to the depth beyond this one, keeping the sum that of a pile this
     /// deep. Measured on 2-D pits, sleeping off, with <see cref="SettlingFraction"/>: the 4,000-disc pile, 56 deep
     /// (<see cref="PileMeasure"/>), lies still at 4 sweeps a step with a quarter, and spends 26 a step with an eighth;
-    /// the 16,000-disc pile, 110 deep, came to rest in none of three pours with a quarter, and in each with about an
-    /// eighth (benchmarks/README.md, twentieth session).
+    /// the 16,000-disc pile, 110 deep, came to rest in none of three pours with a quarter; with an eighth in all
+    /// three, and with this rule (about an eighth there) in two, the third lying still at 60–240 sweeps a step
+    /// (benchmarks/README.md, twentieth session).
     /// </remarks>
     private const float SolvedDepth = 56f;
 
@@ -74,11 +75,13 @@ public sealed partial class SequentialImpulseSolver
     /// those sinkings add up from the floor to the top. Held to the tolerance itself, the 16,000-disc 2-D pit (110
     /// deep, sleeping off) never came to rest: its packing crept and slumped, each slump unsettled thousands of
     /// contacts, and steps 901–1,200 of three pours (seeds 1–3) spent 250–570 sweeps a step. Held to half, with the
-    /// first sweep's test falling with the depth (<see cref="SolvedDepth"/>), the pours came to rest (measured per
-    /// pour in benchmarks/README.md, twentieth session) at the same largest overlap, 0.50 mm. Each part alone was not
-    /// enough: half for the sweeps after the first, or an eighth for the first sweep, left two pours of two stirring,
-    /// and half for those and the shock pass, one. A quarter of the tolerance throughout was too strict for the
-    /// budget: the seed-1 pour still stirred at step 650, spending all its sweeps.
+    /// first sweep's test falling with the depth (<see cref="SolvedDepth"/>), two of the pours came to rest (10–18
+    /// sweeps a step) and the third lay still at 60–240, all at the same largest overlap, 0.50 mm (benchmarks/README.md,
+    /// twentieth session). Each part alone was not enough: half for the sweeps after the first, or an eighth for the
+    /// first sweep, left two pours of two stirring, and half for those and the shock pass, one. A quarter of the
+    /// tolerance throughout was too strict for the budget: the seed-1 pour still stirred at step 650, spending all its
+    /// sweeps. The price is paid while a pile lands, when the substeps spend their whole budget either way: the
+    /// 16,000-disc pour with sleeping on took 131.5 s of wall time to fall asleep, against 96.1 s.
     /// </remarks>
     private const float SettlingFraction = 0.5f;
 
