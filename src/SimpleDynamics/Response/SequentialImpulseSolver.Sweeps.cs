@@ -74,7 +74,7 @@ public sealed partial class SequentialImpulseSolver
     /// A contact left approaching at the tolerance lets its upper body sink that much more each substep, and in a pile
     /// those sinkings add up from the floor to the top. Held to the tolerance itself, the 16,000-disc 2-D pit (110
     /// deep, sleeping off) never came to rest: its packing crept and slumped, each slump unsettled thousands of
-    /// contacts, and steps 901–1,200 of three pours (seeds 1–3) spent 250–570 sweeps a step. Held to half, with the
+    /// contacts, and steps 701–1,200 of three pours (seeds 1–3) spent 150–570 sweeps a step. Held to half, with the
     /// first sweep's test falling with the depth (<see cref="SolvedDepth"/>), two of the pours came to rest (10–18
     /// sweeps a step) and the third lay still at 60–240, all at the same largest overlap, 0.50 mm (benchmarks/README.md,
     /// twentieth session). Each part alone was not enough: half for the sweeps after the first, or an eighth for the
