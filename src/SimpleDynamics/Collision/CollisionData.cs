@@ -105,6 +105,13 @@ public sealed class CollisionData
         _bodiesRemoved = false;
     }
 
+    /// <summary>Keeps the first <paramref name="count"/> contacts and drops the rest (the world's detection, leaving pairs out).</summary>
+    internal void TruncateTo(int count)
+    {
+        Array.Clear(_contacts, count, _count - count);
+        _count = count;
+    }
+
     /// <summary>
     /// Shrinks the storage to the contacts held (at least one), releasing what a crowded step grew it to.
     /// Allocates the smaller array: call it after the scene has shrunk, not every step.

@@ -124,6 +124,9 @@ internal sealed partial class ImpactStepper
         Buffers.EnsureCapacity(ref _anchorQueue, n);
         Buffers.EnsureCapacity(ref _lumpOf, n);
         Buffers.EnsureCapacity(ref _lumps, n);
+        Buffers.EnsureCapacity(ref _frameCentre, n);
+        Buffers.EnsureCapacity(ref _frameReach, n);
+        Buffers.EnsureCapacity(ref _keepsToFrame, n);
     }
 
     private void EnsureContacts(int count)
@@ -149,6 +152,10 @@ internal sealed partial class ImpactStepper
         Buffers.ShrinkTo(ref _anchorQueue, capacity, 0);
         Buffers.ShrinkTo(ref _lumpOf, capacity, 0);
         Buffers.ShrinkTo(ref _lumps, capacity, 0);
+        Buffers.ShrinkTo(ref _frameCentre, capacity, 0);
+        Buffers.ShrinkTo(ref _frameReach, capacity, 0);
+        Buffers.ShrinkTo(ref _keepsToFrame, capacity, 0);
+        Buffers.ShrinkTo(ref _leftOutStart, capacity + 1, 0);
     }
 
     private void ShrinkContacts(int capacity)
@@ -158,5 +165,9 @@ internal sealed partial class ImpactStepper
         Buffers.ShrinkTo(ref _jamState, capacity, 0);
         _endsStep = 0; // nothing kept: read them again
         Buffers.ShrinkTo(ref _limit, capacity, 0);
+        Buffers.ShrinkTo(ref _leftOut, capacity, 0);
+        _leftOutCount = Math.Min(_leftOutCount, _leftOut.Length); // the pairs left out are not needed after their step
+        Buffers.ShrinkTo(ref _restored, capacity, 0);
+        Buffers.ShrinkTo(ref _leftOutOf, 2 * capacity, 0);
     }
 }

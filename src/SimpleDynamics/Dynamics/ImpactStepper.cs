@@ -32,7 +32,8 @@ namespace SimpleDynamics;
 /// still approach is stopped along the normal (an inelastic push through both centres), whatever the responder did.
 /// A body whose path leaves the sphere that detection covered for it (it was knocked into motion faster than it
 /// moved at the start of the step) is looked up again against every body and plane, so it is caught by what lies in
-/// its path in the same step. A body that needs more than a generous number of impacts in one substep (an inelastic
+/// its path in the same step; one that leaves the crowd's motion has the pairs left out for it made contacts again
+/// (ImpactStepper.Crowd.cs). A body that needs more than a generous number of impacts in one substep (an inelastic
 /// collapse, where impacts come ever faster, or a jam) stands still for the rest of it, and at its end the jammed
 /// cluster is made to move as one (an inelastic push along each touching line of centres); if the whole substep
 /// needs too many, its remaining motion is dropped. Either way bodies stay where they are rather than pass through
@@ -135,21 +136,25 @@ internal sealed partial class ImpactStepper
     /// x + v · lookahead / 2, and reaching <c>margin / 2 + lookahead · |v| / 2</c> beyond its own radius (the detector's
     /// pair test is that two such spheres overlap: see ContactGeometry.TryCollide).
     /// </summary>
-    public void BeginStep(ReadOnlySpan<RigidBody> bodies, float margin, float lookahead)
+    public void BeginStep(ReadOnlySpan<RigidBody> bodies, CollisionData contacts, Vector3 gravity, float margin, float lookahead)
     {
         int n = bodies.Length;
         EnsureBodies(n);
         _margin = margin;
+        var crowd = new CrowdMotion(Vectors.Length(gravity) * lookahead);
         for (int i = 0; i < n; i++)
         {
             RigidBody body = bodies[i];
+            float speed = Vectors.Length(body.linearVelocity);
             _sphereCentre[i] = ContactGeometry.Unchecked.PathMiddle(body, lookahead);
-            _reach[i] = 0.5f * margin + 0.5f * lookahead * Vectors.Length(body.linearVelocity);
+            _reach[i] = 0.5f * margin + 0.5f * lookahead * speed;
+            crowd.Add(body, speed);
         }
 
         ImpactCount = 0;
         SaturatedSubsteps = 0;
         Searches = 0;
+        LeaveOutPairsOfTheCrowd(bodies, contacts, crowd, margin, lookahead); // see ImpactStepper.Crowd.cs
     }
 
     /// <summary>
@@ -169,6 +174,7 @@ internal sealed partial class ImpactStepper
         ReadOnlySpan<RigidBody> bodies = step.Bodies;
         CollisionData contacts = step.Contacts;
         _h = h;
+        _substepBegins = _stepLength - stepTimeLeft;
         _stepNumber = step.StepNumber;
         _noGravity = world.Gravity == Vector3.Zero;
         _depthCap = DepthCap(responder, _noGravity);
@@ -197,6 +203,10 @@ internal sealed partial class ImpactStepper
             if (LeavesReach(i))
             {
                 Search(step, i, stepTimeLeft);
+            }
+            else if (LeavesFrame(i))
+            {
+                RestorePairsOf(step, i);
             }
         }
 
@@ -230,10 +240,18 @@ internal sealed partial class ImpactStepper
             {
                 Search(step, a, stepTimeLeft);
             }
+            else if (LeavesFrame(a))
+            {
+                RestorePairsOf(step, a);
+            }
 
             if (b >= 0 && (LeavesReach(b) || MayReachSleepers(step, b)))
             {
                 Search(step, b, stepTimeLeft);
+            }
+            else if (b >= 0 && LeavesFrame(b))
+            {
+                RestorePairsOf(step, b);
             }
 
             PredictAround(a);

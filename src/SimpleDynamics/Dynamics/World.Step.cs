@@ -21,7 +21,9 @@ public sealed partial class World
     /// <item>wake the sleeping islands that awake bodies touch or close on (<see cref="SleepingEnabled"/>); the
     ///   stages below see the awake bodies only;</item>
     /// <item>detect: bounding circles against each other and against the planes (§2.1), including every pair that
-    ///   may touch within the step at the speeds the bodies have (see <see cref="ContactMargin"/>);</item>
+    ///   may touch within the step at the speeds the bodies have (see <see cref="ContactMargin"/>); the pairs of a
+    ///   crowd moving together that cannot meet while both keep to its motion are left out, and become contacts again
+    ///   as soon as one of the two does not (a collision, or the crowd landing, changed its velocity);</item>
     /// <item>the responder's <see cref="ICollisionResponder.BeginStep"/>;</item>
     /// <item>then <see cref="Substeps"/> times, with h = dt / substeps:
     ///   integrate velocities (gravity, forces, torques),
@@ -110,6 +112,19 @@ public sealed partial class World
     /// <summary>Bodies looked up again in the last step because a collision sent them further than detection looked.</summary>
     internal int ImpactSearches => _impacts.Searches;
 
+    /// <summary>Pairs of a crowd moving together left out of the last step's contacts (ImpactStepper.Crowd.cs), for tests.</summary>
+    internal int CrowdPairsLeftOut => _impacts.PairsLeftOut;
+
+    /// <summary>Of those, the pairs made contacts again in the step because a body left the crowd's motion.</summary>
+    internal int CrowdPairsRestored => _impacts.PairsRestored;
+
+    /// <summary>For tests: whether the pairs of a crowd may be left out (default true); false keeps every pair detection reports.</summary>
+    internal bool LeaveOutCrowdPairs
+    {
+        get => _impacts.LeaveOutCrowdPairs;
+        set => _impacts.LeaveOutCrowdPairs = value;
+    }
+
     private void Run(StepContext step, StepStage stage)
     {
         step.Enter(stage);
@@ -153,7 +168,7 @@ public sealed partial class World
             }
         }
 
-        _impacts.BeginStep(BodySpan, margin, dt);
+        _impacts.BeginStep(BodySpan, Collisions, Gravity, margin, dt);
     }
 
     /// <summary>Velocity half of semi-implicit Euler: v += (g + F/m) h, ω += I_w⁻¹ τ h.</summary>

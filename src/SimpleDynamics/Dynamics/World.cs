@@ -145,7 +145,8 @@ public sealed partial class World
     /// <summary>
     /// The contacts of the last step, measured at the end of it, less those naming a body removed since. Sleeping
     /// bodies take no part in a step, so their contacts are not here; their touching pairs stay in
-    /// <see cref="ContactEvents"/> (<see cref="Collision.ContactEvents.Touching"/>, <see cref="ContactsOf"/>).
+    /// <see cref="ContactEvents"/> (<see cref="Collision.ContactEvents.Touching"/>, <see cref="ContactsOf"/>). Nor are
+    /// the pairs of a crowd moving together that never came near each other in the step (see <see cref="Step"/>).
     /// </summary>
     public CollisionData Collisions { get; }
 

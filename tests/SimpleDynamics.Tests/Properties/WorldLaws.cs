@@ -126,7 +126,7 @@ public class WorldLaws
     }
 
     /// <summary>Checks the laws at every step; returns whether some step had a seam contact (in strips).</summary>
-    private static bool KeepsTheLaws(WorldCase c, bool inStrips)
+    internal static bool KeepsTheLaws(WorldCase c, bool inStrips)
     {
         World world = c.Build(out RigidBody[] bodies);
         World? oneThread = null;
