@@ -91,29 +91,4 @@ public class Smash
 
     [Benchmark]
     public void Step() => _world.Step(Warm.Dt);
-
-    private readonly struct BodyState
-    {
-        private readonly Vector3 _position, _linearVelocity, _angularVelocity;
-        private readonly Quaternion _orientation;
-
-        private BodyState(Vector3 position, Quaternion orientation, Vector3 linearVelocity, Vector3 angularVelocity)
-        {
-            _position = position;
-            _orientation = orientation;
-            _linearVelocity = linearVelocity;
-            _angularVelocity = angularVelocity;
-        }
-
-        public static BodyState Of(RigidBody body) =>
-            new(body.Position, body.Orientation, body.LinearVelocity, body.AngularVelocity);
-
-        public void Restore(RigidBody body)
-        {
-            body.Position = _position;
-            body.Orientation = _orientation;
-            body.LinearVelocity = _linearVelocity;
-            body.AngularVelocity = _angularVelocity;
-        }
-    }
 }
