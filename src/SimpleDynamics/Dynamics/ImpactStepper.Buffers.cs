@@ -79,6 +79,7 @@ internal sealed partial class ImpactStepper
 
     private ShrinkPolicy _bodyRoom;
     private ShrinkPolicy _contactRoom;
+    private ShrinkPolicy _leftOutRoom;
 
     /// <summary>
     /// Applies the <see cref="ShrinkPolicy"/> after a step over <paramref name="bodies"/> bodies and
@@ -98,6 +99,12 @@ internal sealed partial class ImpactStepper
             ShrinkContacts(room);
         }
 
+        room = _leftOutRoom.Observe(_leftOutCount, _leftOut.Length, InitialContacts);
+        if (room > 0)
+        {
+            ShrinkLeftOut(room);
+        }
+
         _queue.ShrinkIfIdle(contacts);
     }
 
@@ -106,6 +113,7 @@ internal sealed partial class ImpactStepper
     {
         ShrinkBodies(InitialBodies);
         ShrinkContacts(InitialContacts);
+        ShrinkLeftOut(InitialContacts);
         _queue.TrimExcess();
     }
 
@@ -165,8 +173,14 @@ internal sealed partial class ImpactStepper
         Buffers.ShrinkTo(ref _jamState, capacity, 0);
         _endsStep = 0; // nothing kept: read them again
         Buffers.ShrinkTo(ref _limit, capacity, 0);
+    }
+
+    /// <summary>Shrinks the lists of the pairs left out (ImpactStepper.Crowd.cs), which are not needed after their step.</summary>
+    private void ShrinkLeftOut(int capacity)
+    {
+        Array.Clear(_leftOut, 0, _leftOutCount); // nothing kept: no body held from being collected
+        _leftOutCount = 0;
         Buffers.ShrinkTo(ref _leftOut, capacity, 0);
-        _leftOutCount = Math.Min(_leftOutCount, _leftOut.Length); // the pairs left out are not needed after their step
         Buffers.ShrinkTo(ref _restored, capacity, 0);
         Buffers.ShrinkTo(ref _leftOutOf, 2 * capacity, 0);
     }

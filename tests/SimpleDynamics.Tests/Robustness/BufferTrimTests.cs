@@ -64,6 +64,41 @@ public class BufferTrimTests
         StepsAsBefore(world);
     }
 
+    /// <summary>
+    /// The lattice of a 4,000-disc pit falling together at 10 m/s has most of its pairs left out of its contacts
+    /// (ImpactStepper.Crowd.cs), and their lists grow by megabytes; a world that stays empty after it gives that room
+    /// back without being asked, as it does everything else: it then holds little more than the same world that kept
+    /// every pair (the lists keep room for <see cref="ShrinkPolicy.MinimumCapacity"/> pairs, about 110 KiB; measured
+    /// 1,407 against 1,050 KiB and 1,150 against 1,313 KiB in two runs, and 2,676 against 1,050 KiB with the lists left
+    /// at their room).
+    /// </summary>
+    [Fact]
+    public void A_falling_crowd_leaves_its_pairs_out_and_a_world_that_stays_empty_after_it_gives_their_room_back()
+    {
+        long keptAll = HeldAfterFallingCrowd(leaveOut: false, out _, out _);
+        long leftOut = HeldAfterFallingCrowd(leaveOut: true, out int pairs, out int contacts);
+        _output.WriteLine($"{pairs} pairs left out beside {contacts} contacts; after {ShrinkPolicy.QuietSteps + 1} empty steps the world holds {leftOut / 1024} KiB, {keptAll / 1024} KiB had it kept every pair");
+
+        Assert.True(pairs > 4 * contacts, $"{pairs} pairs left out beside {contacts} contacts");
+        Assert.True(leftOut < keptAll + 512 * 1024, $"the idle world holds {leftOut / 1024} KiB, {keptAll / 1024} KiB had it kept every pair");
+    }
+
+    /// <summary>The bytes a 4,000-disc lattice's world holds after falling 60 steps, its bodies removed and the policy's steps.</summary>
+    private static long HeldAfterFallingCrowd(bool leaveOut, out int pairsLeftOut, out int contacts)
+    {
+        long baseline = Heap();
+        World world = Scenes.BallPit(4000, planar: true);
+        world.LeaveOutCrowdPairs = leaveOut;
+        Step(world, 60);
+        pairsLeftOut = world.CrowdPairsLeftOut;
+        contacts = world.Collisions.Count;
+        RemoveAll(world);
+        Step(world, ShrinkPolicy.QuietSteps + 1);
+        long held = Heap() - baseline;
+        StepsAsBefore(world);
+        return held;
+    }
+
     [Fact]
     public void A_steady_pile_shrinks_once_after_a_burst_and_then_steps_without_allocating()
     {
