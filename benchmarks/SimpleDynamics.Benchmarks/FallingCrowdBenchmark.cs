@@ -2,7 +2,6 @@ using System;
 using System.Collections.Generic;
 using System.Linq;
 using BenchmarkDotNet.Attributes;
-using SimpleDynamics.Response;
 
 namespace SimpleDynamics.Benchmarks;
 
@@ -23,8 +22,8 @@ public class FallingCrowd
     /// <summary>Steps before the window: 0.67 s of free fall.</summary>
     private const int Fall = 40;
 
+    private readonly ReplayedWindow _window = new();
     private World _world = new();
-    private BodyState[] _snapshot = Array.Empty<BodyState>();
 
     [ParamsSource(nameof(Counts))]
     public int N { get; set; }
@@ -45,7 +44,7 @@ public class FallingCrowd
             _world.Step(Warm.Dt);
         }
 
-        _snapshot = _world.Bodies.Select(BodyState.Of).ToArray();
+        _window.TakeSnapshot(_world);
 
         // One reference run of the window: the contacts at its end, for the table, and the arrays grown to it.
         for (int i = 0; i < Window; i++)
@@ -65,15 +64,7 @@ public class FallingCrowd
 
     /// <summary>Puts every body back to the start of the window; the solver forgets its warm-start impulses.</summary>
     [IterationSetup]
-    public void Rewind()
-    {
-        for (int i = 0; i < _snapshot.Length; i++)
-        {
-            _snapshot[i].Restore(_world.Bodies[i]);
-        }
-
-        (_world.Responder as SequentialImpulseSolver)?.ResetWarmStart();
-    }
+    public void Rewind() => _window.Rewind(_world);
 
     [Benchmark]
     public void Step() => _world.Step(Warm.Dt);

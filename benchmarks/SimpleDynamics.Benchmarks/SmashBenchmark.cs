@@ -1,10 +1,7 @@
 using System;
 using System.Linq;
 using System.Collections.Generic;
-using System.Numerics;
 using BenchmarkDotNet.Attributes;
-using SimpleDynamics.Bodies;
-using SimpleDynamics.Response;
 
 namespace SimpleDynamics.Benchmarks;
 
@@ -24,8 +21,8 @@ public class Smash
     /// <summary>The striker starts 2.9 m from the grid at 20 m/s: 8 steps bring it to just short of contact.</summary>
     private const int Approach = 8;
 
+    private readonly ReplayedWindow _window = new();
     private World _world = new();
-    private BodyState[] _snapshot = Array.Empty<BodyState>();
 
     [ParamsSource(nameof(Counts))]
     public int N { get; set; }
@@ -47,11 +44,7 @@ public class Smash
             throw new InvalidOperationException("The smash snapshot must be taken before the impact.");
         }
 
-        _snapshot = new BodyState[_world.Bodies.Count];
-        for (int i = 0; i < _snapshot.Length; i++)
-        {
-            _snapshot[i] = BodyState.Of(_world.Bodies[i]);
-        }
+        _window.TakeSnapshot(_world);
 
         // One reference run of the window: the peak contact count and penetration it reaches. Also makes every
         // array in the world grow to its size for this window, so the timed runs measure reuse, not growth.
@@ -79,15 +72,7 @@ public class Smash
 
     /// <summary>Puts every body back to just before the impact; the solver forgets its warm-start impulses (there were none then).</summary>
     [IterationSetup]
-    public void Rewind()
-    {
-        for (int i = 0; i < _snapshot.Length; i++)
-        {
-            _snapshot[i].Restore(_world.Bodies[i]);
-        }
-
-        (_world.Responder as SequentialImpulseSolver)?.ResetWarmStart();
-    }
+    public void Rewind() => _window.Rewind(_world);
 
     [Benchmark]
     public void Step() => _world.Step(Warm.Dt);
