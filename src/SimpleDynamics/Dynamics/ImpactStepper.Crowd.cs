@@ -51,10 +51,11 @@ internal sealed partial class ImpactStepper
     /// predicted by this pass, though none of them approached.</para>
     /// <para>The same reasoning holds in any frame that moves at a constant velocity V: there a body's path over the
     /// step is x + (v − V) t, inside the sphere centred at x + (v − V) dt / 2 of radius r + margin / 2 + |v − V| dt / 2
-    /// (half the margin holds the ½ |g| dt² that gravity bends every path by, as in the world). Two bodies whose spheres in the frame do not meet cannot meet while each stays in its sphere in the frame, which
-    /// moves with the frame. For a crowd moving at about V these spheres are as small as a body's at rest. So with V
-    /// the mean velocity of the bodies moving faster than the speed gravity adds in a step, a pair is left out when its
-    /// spheres meet in the world but not in the frame; its bodies are marked as keeping to the frame.</para>
+    /// (half the margin holds the ½ |g| dt² that gravity bends every path by, as in the world). Two bodies whose
+    /// spheres in the frame do not meet cannot meet while each stays in its sphere in the frame, which moves with the
+    /// frame. For a crowd moving at about V these spheres are as small as a body's at rest. So with V the mean velocity
+    /// of the bodies moving faster than the speed gravity adds in a step, a pair is left out when its spheres meet in
+    /// the world but not in the frame; its bodies are marked as keeping to the frame.</para>
     /// <para>A body that leaves its sphere in the frame (a collision, the responder, or the landing of a crowd changed
     /// its velocity) has its pairs that were left out made contacts again, measured where the bodies are, and
     /// predicted like any other (see <see cref="LeavesFrame"/>). A body that leaves its sphere in the world is looked
@@ -64,8 +65,8 @@ internal sealed partial class ImpactStepper
     /// at rest, or a few balls flying about, keeps every pair detection reported. Nor while a crowd lands or is
     /// struck: a shock runs through a packed crowd within the substep, and nearly every pair left out is made a contact
     /// again in the same step, which costs more than keeping it (the 16,000-disc pit as it landed, at steps 150, 180,
-    /// 210 and 240: 92–100 % of the 8,000–62,000 pairs left out). So after a step that restored more than an eighth of the pairs it
-    /// left out, the frame rests for <see cref="FramePauseSteps"/> steps.</para>
+    /// 210 and 240: 92–100 % of the 8,000–62,000 pairs left out). So after a step that restored more than an eighth
+    /// of the pairs it left out, the frame rests for <see cref="FramePauseSteps"/> steps.</para>
     /// </remarks>
     private void LeaveOutPairsOfTheCrowd(ReadOnlySpan<RigidBody> bodies, CollisionData contacts, in CrowdMotion crowd, float margin, float lookahead)
     {
