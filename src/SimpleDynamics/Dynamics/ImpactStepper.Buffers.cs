@@ -181,7 +181,6 @@ internal sealed partial class ImpactStepper
         Array.Clear(_leftOut, 0, _leftOutCount); // nothing kept: no body held from being collected
         _leftOutCount = 0;
         Buffers.ShrinkTo(ref _leftOut, capacity, 0);
-        Buffers.ShrinkTo(ref _restored, capacity, 0);
         Buffers.ShrinkTo(ref _leftOutOf, 2 * capacity, 0);
     }
 }

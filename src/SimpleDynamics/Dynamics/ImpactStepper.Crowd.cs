@@ -23,7 +23,6 @@ internal sealed partial class ImpactStepper
     // The pairs left out: the contacts detection reported for them, and each body's, listed by body.
     private Contact[] _leftOut = new Contact[InitialContacts];
     private int _leftOutCount;
-    private bool[] _restored = new bool[InitialContacts];
     private int[] _leftOutStart = new int[InitialBodies + 1]; // body i's entries are _leftOutOf[_leftOutStart[i] .. _leftOutStart[i + 1])
     private int[] _leftOutOf = new int[2 * InitialContacts];
 
@@ -87,19 +86,13 @@ internal sealed partial class ImpactStepper
             return;
         }
 
-        if (!LeaveOutCrowdPairs || !ChooseFrame(bodies, crowd))
+        if (!LeaveOutCrowdPairs || !ChooseFrame(crowd) || !PlaceFrameSpheres(bodies, margin, lookahead))
         {
             return;
         }
 
+        _frameUsed = true;
         int n = _frameBodies = bodies.Length;
-        for (int i = 0; i < n; i++)
-        {
-            Vector3 relative = bodies[i].linearVelocity - _frameVelocity;
-            _frameCentre[i] = bodies[i].position + relative * (0.5f * lookahead);
-            _frameReach[i] = 0.5f * margin + 0.5f * lookahead * Vectors.Length(relative);
-            _keepsToFrame[i] = false;
-        }
 
         Contact[] storage = contacts.Storage;
         int count = contacts.Count, kept = 0;
@@ -156,10 +149,10 @@ internal sealed partial class ImpactStepper
     }
 
     /// <summary>
-    /// The crowd's velocity, the mean velocity of the moving bodies (see <see cref="CrowdMotion"/>), if the frame is
-    /// worth using (see <see cref="LeaveOutPairsOfTheCrowd"/>).
+    /// Takes the mean velocity of the moving bodies (see <see cref="CrowdMotion"/>) as the crowd's, if at least an
+    /// eighth of the dynamic bodies move.
     /// </summary>
-    private bool ChooseFrame(ReadOnlySpan<RigidBody> bodies, in CrowdMotion crowd)
+    private bool ChooseFrame(in CrowdMotion crowd)
     {
         if (crowd.Moving < 2 || crowd.Moving < crowd.Dynamic / 8)
         {
@@ -167,19 +160,32 @@ internal sealed partial class ImpactStepper
         }
 
         _frameVelocity = crowd.MovingVelocities / crowd.Moving;
-        float speeds = 0, saved = 0;
-        foreach (RigidBody body in bodies)
+        return true;
+    }
+
+    /// <summary>
+    /// Gives every body its sphere in the crowd's frame; returns whether taking for each dynamic body the smaller of
+    /// its two spheres at least halves the sum of their radii that grow with speed (<see cref="_reach"/> holds the
+    /// world's, from <see cref="BeginStep"/>).
+    /// </summary>
+    private bool PlaceFrameSpheres(ReadOnlySpan<RigidBody> bodies, float margin, float lookahead)
+    {
+        float grown = 0, saved = 0;
+        for (int i = 0; i < bodies.Length; i++)
         {
+            RigidBody body = bodies[i];
+            Vector3 relative = body.linearVelocity - _frameVelocity;
+            _frameCentre[i] = body.position + relative * (0.5f * lookahead);
+            _frameReach[i] = 0.5f * margin + 0.5f * lookahead * Vectors.Length(relative);
+            _keepsToFrame[i] = false;
             if (body.IsDynamic)
             {
-                float speed = Vectors.Length(body.linearVelocity);
-                speeds += speed;
-                saved += MathF.Max(speed - Vectors.Length(body.linearVelocity - _frameVelocity), 0f);
+                grown += _reach[i] - 0.5f * margin;
+                saved += MathF.Max(_reach[i] - _frameReach[i], 0f);
             }
         }
 
-        _frameUsed = saved >= 0.5f * speeds && speeds > 0;
-        return _frameUsed;
+        return saved >= 0.5f * grown && grown > 0;
     }
 
     /// <summary>Whether the spheres of two bodies in the crowd's frame do not meet.</summary>
@@ -195,13 +201,11 @@ internal sealed partial class ImpactStepper
     {
         Buffers.EnsureCapacity(ref _leftOutStart, n + 1);
         Buffers.EnsureCapacity(ref _leftOutOf, 2 * _leftOutCount);
-        Buffers.EnsureCapacity(ref _restored, _leftOutCount);
         Array.Clear(_leftOutStart, 0, n + 1);
         for (int l = 0; l < _leftOutCount; l++)
         {
             _leftOutStart[_leftOut[l].BodyA.index + 1]++;
             _leftOutStart[_leftOut[l].BodyB.index + 1]++;
-            _restored[l] = false;
         }
 
         for (int i = 0; i < n; i++)
@@ -268,23 +272,14 @@ internal sealed partial class ImpactStepper
         CollisionData contacts = step.Contacts;
         for (int e = _leftOutStart[i]; e < _leftOutStart[i + 1]; e++)
         {
-            int l = _leftOutOf[e];
-            if (_restored[l])
+            RigidBody first = _leftOut[_leftOutOf[e]].BodyA, second = _leftOut[_leftOutOf[e]].BodyB;
+            if (HasContactWith(i, first.index == i ? second.index : first.index))
             {
-                continue;
-            }
-
-            _restored[l] = true;
-            RigidBody first = _leftOut[l].BodyA, second = _leftOut[l].BodyB;
-            int other = first.index == i ? second.index : first.index;
-            if (HasContactWith(i, other))
-            {
-                continue; // a search found it
+                continue; // restored from its other body, or found by a search
             }
 
             PairsRestored++;
-            float penetration = ContactGeometry.Unchecked.CirclePenetration(first.position, first.radius, second.position, second.radius, out Vector3 normal);
-            AddContact(contacts, Contact.Unchecked(first, second, first.position - normal * (first.radius - 0.5f * penetration), normal, penetration));
+            AddMeasuredContact(contacts, first, second);
         }
     }
 }

@@ -92,8 +92,7 @@ internal sealed partial class ImpactStepper
                 continue; // filtered or sensor pairs never become contacts; others may have one already
             }
 
-            float penetration = ContactGeometry.Unchecked.CirclePenetration(first.position, first.radius, second.position, second.radius, out Vector3 normal);
-            AddContact(contacts, Contact.Unchecked(first, second, first.position - normal * (first.radius - 0.5f * penetration), normal, penetration));
+            AddMeasuredContact(contacts, first, second);
         }
 
         if (!body.IsDynamic)
@@ -132,6 +131,13 @@ internal sealed partial class ImpactStepper
         }
 
         _bodyCount = bodies.Length;
+    }
+
+    /// <summary>Adds the contact of two bodies, measured where they are now (the middle of their overlap, or of their gap).</summary>
+    private void AddMeasuredContact(CollisionData contacts, RigidBody first, RigidBody second)
+    {
+        float penetration = ContactGeometry.Unchecked.CirclePenetration(first.position, first.radius, second.position, second.radius, out Vector3 normal);
+        AddContact(contacts, Contact.Unchecked(first, second, first.position - normal * (first.radius - 0.5f * penetration), normal, penetration));
     }
 
     private void AddContact(CollisionData contacts, in Contact contact)
