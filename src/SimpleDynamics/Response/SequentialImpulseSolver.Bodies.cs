@@ -24,6 +24,9 @@ public sealed partial class SequentialImpulseSolver
     /// <summary>Whether the last step began was solved on the planar path (see IsPlanar), for tests.</summary>
     internal bool SolvedPlanar => _planar;
 
+    /// <summary>Whether the last step began on the planar path (a body woken during it may end that), for tests.</summary>
+    internal bool BeganPlanar { get; private set; }
+
     /// <summary>
     /// Gives each body a slot in contiguous arrays; slot 0 is the ground (all zero). The slots follow the bodies'
     /// height along gravity, like the contacts (<see cref="OrderAlongGravity"/>), so that a sweep finds the bodies of
@@ -46,7 +49,7 @@ public sealed partial class SequentialImpulseSolver
         }
 
         _gravity = gravity;
-        _planar = IsPlanar(bodies, gravity);
+        _planar = BeganPlanar = IsPlanar(bodies, gravity);
         _heightOrder.Sort(_bodyHeights.AsSpan(0, n), _bodyOrder.AsSpan(0, n));
         if (_strips.Count > 1)
         {

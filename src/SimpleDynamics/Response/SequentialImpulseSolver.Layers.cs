@@ -245,13 +245,14 @@ public sealed partial class SequentialImpulseSolver
         bool formed = true, scale = _bandScalePending, gather = _gatheringBands;
         for (int i = start; i < end; i++)
         {
-            ref ContactConstraint c = ref _constraints[_active[i]];
+            int k = _active[i];
+            ref ContactConstraint c = ref _constraints[k];
             if (scale)
             {
                 c.NormalImpulse = ScaledImpulse(ref c, i);
             }
 
-            largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(ref c, out float change));
+            largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(k, out float change));
             largestChange = MathF.Max(largestChange, change);
             largestImpulse = MathF.Max(largestImpulse, c.NormalImpulse);
             if (gather && c.NormalImpulse > 0 && formed)

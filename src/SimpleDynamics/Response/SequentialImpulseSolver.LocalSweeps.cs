@@ -153,8 +153,9 @@ public sealed partial class SequentialImpulseSolver
         while (_velocityMarks.TryTake(out int p))
         {
             LocalSolvesThisStep++;
-            ref ContactConstraint c = ref _constraints[_active[p]];
-            largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(ref c, out _));
+            int k = _active[p];
+            ref ContactConstraint c = ref _constraints[k];
+            largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(k, out _));
             Publish(c.A, p, drift2);
             Publish(c.B, p, drift2);
         }
@@ -176,8 +177,9 @@ public sealed partial class SequentialImpulseSolver
         while (_velocityMarks.TryTakeShared(ref word, start, end, out int p))
         {
             solves++;
-            ref ContactConstraint c = ref _constraints[_active[p]];
-            largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(ref c, out _));
+            int k = _active[p];
+            ref ContactConstraint c = ref _constraints[k];
+            largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(k, out _));
             PublishShared(c.A, p, drift2, ref markedForNext);
             PublishShared(c.B, p, drift2, ref markedForNext);
         }

@@ -92,6 +92,7 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
     private void ShrinkContacts(int capacity)
     {
         Buffers.ShrinkTo(ref _constraints, capacity, 0);
+        Buffers.ShrinkTo(ref _frames, capacity, 0);
         Buffers.ShrinkTo(ref _stepImpulses, capacity, 0);
         Buffers.ShrinkTo(ref _order, capacity, 0);
         Buffers.ShrinkTo(ref _heights, capacity, 0);

@@ -11,6 +11,7 @@ public sealed partial class SequentialImpulseSolver
 {
     private readonly HeightOrder _heightOrder = new();
     private ContactConstraint[] _constraints = new ContactConstraint[InitialCapacity];
+    private TangentFrame[] _frames = new TangentFrame[InitialCapacity]; // per constraint, in 3-D steps only (MeasureRange fills them)
     private ContactStepImpulses[] _stepImpulses = new ContactStepImpulses[InitialCapacity]; // per constraint
     private int[] _order = new int[InitialCapacity];
     private float[] _heights = new float[InitialCapacity];
@@ -164,6 +165,11 @@ public sealed partial class SequentialImpulseSolver
     private void MeasureConstraints(ReadOnlySpan<Contact> contacts)
     {
         Buffers.EnsureCapacity(ref _active, contacts.Length);
+        if (!_planar)
+        {
+            Buffers.EnsureCapacity(ref _frames, contacts.Length);
+        }
+
         bool inStrips = _substepInStrips && _threads is not null && _strips.Count > 1; // the last substep's
         _substepInStrips = false;
         _bandsAssigned = false;
@@ -221,7 +227,12 @@ public sealed partial class SequentialImpulseSolver
             {
                 c.NormalImpulse = 0;
                 _stepImpulses[k].Friction = Vector3.Zero;
-                c.FrictionImpulse1 = c.FrictionImpulse2 = 0;
+                c.FrictionImpulse1 = 0;
+                if (!_planar)
+                {
+                    c.FrictionImpulse2 = 0;
+                }
+
                 continue;
             }
 
@@ -235,39 +246,40 @@ public sealed partial class SequentialImpulseSolver
             c.NormalMass = InverseOrZero(inverseMassSum); // eq. 16 along n: r × n = 0 for spheres, so J_α = 0
             if (_planar)
             {
-                // The second tangent's fields stay as PrepareConstraints zeroed them (ContactConstraint).
-                c.Tangent1 = new Vector3(c.Normal.Y, -c.Normal.X, 0);
-                c.SpinA1 = new Vector3(0, 0, c.RhoA * _inverseInertias[c.A].M33);
-                c.SpinB1 = new Vector3(0, 0, -c.RhoB * _inverseInertias[c.B].M33);
-                c.TangentMass1 = InverseOrZero(inverseMassSum + c.RhoA * c.SpinA1.Z - c.RhoB * c.SpinB1.Z);
+                c.PlanarSpinA = c.RhoA * _inverseInertias[c.A].M33;
+                c.PlanarSpinB = -c.RhoB * _inverseInertias[c.B].M33;
+                c.TangentMass1 = InverseOrZero(inverseMassSum + c.RhoA * c.PlanarSpinA - c.RhoB * c.PlanarSpinB);
+                c.FrictionImpulse1 = Vectors.Dot(_stepImpulses[k].Friction, c.PlanarTangent);
+                float none = 0;
+                ClampFriction(ref c.FrictionImpulse1, ref none, c.Friction * c.NormalImpulse);
+                continue;
+            }
+
+            ref TangentFrame f = ref _frames[k];
+            Vectors.UncheckedTangents(c.Normal, out f.Tangent1, out f.Tangent2); // a unit normal: measured, or a plane's
+            float kA = _inertiaScalars[c.A], kB = _inertiaScalars[c.B];
+            if (!float.IsNaN(kA) && !float.IsNaN(kB))
+            {
+                // Spheres (I⁻¹ = k·1, or 0 for the ground): both tangents see 1/m_A + 1/m_B + k_A ρ_A² + k_B ρ_B².
+                f.SpinA1 = -c.RhoA * kA * f.Tangent2;
+                f.SpinB1 = c.RhoB * kB * f.Tangent2;
+                f.SpinA2 = c.RhoA * kA * f.Tangent1;
+                f.SpinB2 = -c.RhoB * kB * f.Tangent1;
+                c.TangentMass1 = c.TangentMass2 = InverseOrZero(inverseMassSum + kA * c.RhoA * c.RhoA + kB * c.RhoB * c.RhoB);
             }
             else
             {
-                Vectors.UncheckedTangents(c.Normal, out c.Tangent1, out c.Tangent2); // a unit normal: measured, or a plane's
-                float kA = _inertiaScalars[c.A], kB = _inertiaScalars[c.B];
-                if (!float.IsNaN(kA) && !float.IsNaN(kB))
-                {
-                    // Spheres (I⁻¹ = k·1, or 0 for the ground): both tangents see 1/m_A + 1/m_B + k_A ρ_A² + k_B ρ_B².
-                    c.SpinA1 = -c.RhoA * kA * c.Tangent2;
-                    c.SpinB1 = c.RhoB * kB * c.Tangent2;
-                    c.SpinA2 = c.RhoA * kA * c.Tangent1;
-                    c.SpinB2 = -c.RhoB * kB * c.Tangent1;
-                    c.TangentMass1 = c.TangentMass2 = InverseOrZero(inverseMassSum + kA * c.RhoA * c.RhoA + kB * c.RhoB * c.RhoB);
-                }
-                else
-                {
-                    c.SpinA1 = -c.RhoA * _inverseInertias[c.A].Transform(c.Tangent2);
-                    c.SpinB1 = c.RhoB * _inverseInertias[c.B].Transform(c.Tangent2);
-                    c.SpinA2 = c.RhoA * _inverseInertias[c.A].Transform(c.Tangent1);
-                    c.SpinB2 = -c.RhoB * _inverseInertias[c.B].Transform(c.Tangent1);
-                    c.TangentMass1 = InverseOrZero(inverseMassSum + Vectors.Dot(c.RhoB * c.SpinB1 - c.RhoA * c.SpinA1, c.Tangent2));
-                    c.TangentMass2 = InverseOrZero(inverseMassSum + Vectors.Dot(c.RhoA * c.SpinA2 - c.RhoB * c.SpinB2, c.Tangent1));
-                }
-                c.FrictionImpulse2 = Vectors.Dot(_stepImpulses[k].Friction, c.Tangent2);
+                f.SpinA1 = -c.RhoA * _inverseInertias[c.A].Transform(f.Tangent2);
+                f.SpinB1 = c.RhoB * _inverseInertias[c.B].Transform(f.Tangent2);
+                f.SpinA2 = c.RhoA * _inverseInertias[c.A].Transform(f.Tangent1);
+                f.SpinB2 = -c.RhoB * _inverseInertias[c.B].Transform(f.Tangent1);
+                c.TangentMass1 = InverseOrZero(inverseMassSum + Vectors.Dot(c.RhoB * f.SpinB1 - c.RhoA * f.SpinA1, f.Tangent2));
+                c.TangentMass2 = InverseOrZero(inverseMassSum + Vectors.Dot(c.RhoA * f.SpinA2 - c.RhoB * f.SpinB2, f.Tangent1));
             }
 
-            c.FrictionImpulse1 = Vectors.Dot(_stepImpulses[k].Friction, c.Tangent1);
-            ClampFriction(ref c);
+            c.FrictionImpulse2 = Vectors.Dot(_stepImpulses[k].Friction, f.Tangent2);
+            c.FrictionImpulse1 = Vectors.Dot(_stepImpulses[k].Friction, f.Tangent1);
+            ClampFriction(ref c.FrictionImpulse1, ref c.FrictionImpulse2, c.Friction * c.NormalImpulse);
         }
 
         return listed - start;

@@ -197,7 +197,7 @@ public sealed partial class SequentialImpulseSolver
             case StripPass.WarmStart:
                 foreach (int k in active)
                 {
-                    WarmStart(ref _constraints[k]);
+                    WarmStart(k);
                 }
 
                 break;
@@ -205,7 +205,7 @@ public sealed partial class SequentialImpulseSolver
             case StripPass.Sweep:
                 foreach (int k in active)
                 {
-                    SolveContact(ref _constraints[k]);
+                    SolveContact(k);
                 }
 
                 break;
@@ -215,10 +215,9 @@ public sealed partial class SequentialImpulseSolver
                 float largestChange = 0, largestImpulse = 0, largestSpeedChange = 0;
                 foreach (int k in active)
                 {
-                    ref ContactConstraint c = ref _constraints[k];
-                    largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(ref c, out float change));
+                    largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(k, out float change));
                     largestChange = MathF.Max(largestChange, change);
-                    largestImpulse = MathF.Max(largestImpulse, c.NormalImpulse);
+                    largestImpulse = MathF.Max(largestImpulse, _constraints[k].NormalImpulse);
                 }
 
                 _stripResults[slot * Padding] = largestSpeedChange;

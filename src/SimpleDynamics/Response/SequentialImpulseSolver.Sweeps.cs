@@ -18,15 +18,29 @@ public sealed partial class SequentialImpulseSolver
     private void WarmStart() => RunPass(StripPass.WarmStart);
 
     [MethodImpl(MethodImplOptions.AggressiveInlining)] // in the warm start's loop
-    private void WarmStart(ref ContactConstraint c)
+    private void WarmStart(int k)
     {
+        ref ContactConstraint c = ref _constraints[k];
         if (!WarmStarting)
         {
-            c.NormalImpulse = c.FrictionImpulse1 = c.FrictionImpulse2 = 0;
+            c.NormalImpulse = c.FrictionImpulse1 = 0;
+            if (!_planar)
+            {
+                c.FrictionImpulse2 = 0;
+            }
+
             return;
         }
 
-        Apply(ref c, c.NormalImpulse, c.FrictionImpulse1, c.FrictionImpulse2);
+        if (_planar)
+        {
+            ApplyPlanar(ref c, c.NormalImpulse, c.FrictionImpulse1);
+        }
+        else
+        {
+            ref TangentFrame f = ref _frames[k];
+            Apply(ref c, ref f, c.NormalImpulse, c.FrictionImpulse1, c.FrictionImpulse2);
+        }
     }
 
     /// <summary>Velocity sweeps done in the step begun last, for tests.</summary>
@@ -187,10 +201,11 @@ public sealed partial class SequentialImpulseSolver
     /// (0 for a contact that nothing can move), and gives the change of its normal impulse, |ΔP_n|.
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)] // in the measured sweeps' inner loops
-    private float SolveContactMeasured(ref ContactConstraint c, out float change)
+    private float SolveContactMeasured(int k, out float change)
     {
+        ref ContactConstraint c = ref _constraints[k];
         float before = c.NormalImpulse;
-        SolveContact(ref c);
+        SolveContact(k);
         change = MathF.Abs(c.NormalImpulse - before);
         return c.NormalMass > 0 ? change / c.NormalMass : 0f;
     }
@@ -207,14 +222,16 @@ public sealed partial class SequentialImpulseSolver
     /// tangents, perpendicular to n, so it leaves Δv·n as it was: the normal impulse is found from the same
     /// velocities, and both are applied at once.
     /// </remarks>
-    private void SolveContact(ref ContactConstraint c)
+    private void SolveContact(int k)
     {
+        ref ContactConstraint c = ref _constraints[k];
         if (_planar)
         {
             SolvePlanarContact(ref c);
             return;
         }
 
+        ref TangentFrame f = ref _frames[k];
         ref SolverBody a = ref _bodies[c.A];
         ref SolverBody b = ref _bodies[c.B];
         Vector3 linear = a.Linear - b.Linear;
@@ -228,9 +245,9 @@ public sealed partial class SequentialImpulseSolver
             Vector3 spin = c.RhoA * a.Angular + c.RhoB * b.Angular;
             float limit = c.Friction * oldNormal;
             float old1 = c.FrictionImpulse1, old2 = c.FrictionImpulse2;
-            c.FrictionImpulse1 -= c.TangentMass1 * (Vectors.Dot(linear, c.Tangent1) - Vectors.Dot(spin, c.Tangent2));
-            c.FrictionImpulse2 -= c.TangentMass2 * (Vectors.Dot(linear, c.Tangent2) + Vectors.Dot(spin, c.Tangent1));
-            ClampFriction(ref c, limit);
+            c.FrictionImpulse1 -= c.TangentMass1 * (Vectors.Dot(linear, f.Tangent1) - Vectors.Dot(spin, f.Tangent2));
+            c.FrictionImpulse2 -= c.TangentMass2 * (Vectors.Dot(linear, f.Tangent2) + Vectors.Dot(spin, f.Tangent1));
+            ClampFriction(ref c.FrictionImpulse1, ref c.FrictionImpulse2, limit);
             change1 = c.FrictionImpulse1 - old1;
             change2 = c.FrictionImpulse2 - old2;
         }
@@ -239,7 +256,7 @@ public sealed partial class SequentialImpulseSolver
             return;
         }
 
-        Apply(ref c, normal - oldNormal, change1, change2);
+        Apply(ref c, ref f, normal - oldNormal, change1, change2);
     }
 
     /// <summary>
@@ -247,7 +264,7 @@ public sealed partial class SequentialImpulseSolver
     /// t₁ = (n_y, −n_x), and spins about z alone, so the relative velocity along n is Δv_x n_x + Δv_y n_y and along t₁
     /// Δv_x n_y − Δv_y n_x + ρ_A ω_A,z + ρ_B ω_B,z. The disc |P_t| ≤ μ P_n is the interval [−μ P_n, μ P_n]. The z parts
     /// of the 3-D path are exact zeros here, so the results are the 3-D path's, bit for bit but for the sign of a zero;
-    /// what it saves is the 3-D dot products (a slow instruction on some processors) and the loads of the zeros.
+    /// what it saves is the 3-D dot products (a slow instruction on some processors) and reading the tangent frame.
     /// </summary>
     private void SolvePlanarContact(ref ContactConstraint c)
     {
@@ -264,22 +281,16 @@ public sealed partial class SequentialImpulseSolver
         {
             float limit = c.Friction * oldNormal;
             float old = c.FrictionImpulse1;
-            float sliding = vx * c.Tangent1.X + vy * c.Tangent1.Y + (c.RhoA * a.Angular.Z + c.RhoB * b.Angular.Z);
+            float sliding = vx * ny + vy * -nx + (c.RhoA * a.Angular.Z + c.RhoB * b.Angular.Z);
             c.FrictionImpulse1 = Math.Clamp(old - c.TangentMass1 * sliding, -limit, limit);
             change = c.FrictionImpulse1 - old;
-            a.Angular.Z += change * c.SpinA1.Z;
-            b.Angular.Z -= change * c.SpinB1.Z;
         }
         else if (normal == oldNormal)
         {
             return;
         }
 
-        float px = pushed * nx + change * c.Tangent1.X, py = pushed * ny + change * c.Tangent1.Y;
-        a.Linear.X += px * a.InverseMass;
-        a.Linear.Y += py * a.InverseMass;
-        b.Linear.X -= px * b.InverseMass;
-        b.Linear.Y -= py * b.InverseMass;
+        ApplyPlanar(ref c, pushed, change);
     }
 
     /// <summary>
@@ -287,15 +298,34 @@ public sealed partial class SequentialImpulseSolver
     /// spins through the prepared I⁻¹ (r × t) of each tangent (the normal part turns nothing: r × n = 0).
     /// </summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)] // in the sweeps' inner loop
-    private void Apply(ref ContactConstraint c, float normal, float tangent1, float tangent2)
+    private void Apply(ref ContactConstraint c, ref TangentFrame f, float normal, float tangent1, float tangent2)
     {
         ref SolverBody a = ref _bodies[c.A];
         ref SolverBody b = ref _bodies[c.B];
-        Vector3 impulse = normal * c.Normal + tangent1 * c.Tangent1 + tangent2 * c.Tangent2;
+        Vector3 impulse = normal * c.Normal + tangent1 * f.Tangent1 + tangent2 * f.Tangent2;
         a.Linear += impulse * a.InverseMass;
-        a.Angular += tangent1 * c.SpinA1 + tangent2 * c.SpinA2;
+        a.Angular += tangent1 * f.SpinA1 + tangent2 * f.SpinA2;
         b.Linear -= impulse * b.InverseMass;
-        b.Angular -= tangent1 * c.SpinB1 + tangent2 * c.SpinB2;
+        b.Angular -= tangent1 * f.SpinB1 + tangent2 * f.SpinB2;
+    }
+
+    /// <summary>
+    /// <see cref="Apply"/> in a planar step: P = p_n n + p_1 t₁ with t₁ = (n_y, −n_x), to A and −P to B (eq. 6), and
+    /// the spins about z (eq. 15).
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // in the warm start's loop
+    private void ApplyPlanar(ref ContactConstraint c, float normal, float tangent1)
+    {
+        ref SolverBody a = ref _bodies[c.A];
+        ref SolverBody b = ref _bodies[c.B];
+        float nx = c.Normal.X, ny = c.Normal.Y;
+        float px = normal * nx + tangent1 * ny, py = normal * ny + tangent1 * -nx;
+        a.Linear.X += px * a.InverseMass;
+        a.Linear.Y += py * a.InverseMass;
+        a.Angular.Z += tangent1 * c.PlanarSpinA;
+        b.Linear.X -= px * b.InverseMass;
+        b.Linear.Y -= py * b.InverseMass;
+        b.Angular.Z -= tangent1 * c.PlanarSpinB;
     }
 
     /// <summary>
@@ -358,17 +388,18 @@ public sealed partial class SequentialImpulseSolver
         return slowing;
     }
 
-    private static void ClampFriction(ref ContactConstraint c) => ClampFriction(ref c, c.Friction * c.NormalImpulse);
-
-    /// <summary>Scales the friction impulse back onto the disc |P_t| ≤ <paramref name="limit"/> (Coulomb) if it lies outside.</summary>
-    private static void ClampFriction(ref ContactConstraint c, float limit)
+    /// <summary>
+    /// Scales the friction impulse (p_1, p_2) back onto the disc |P_t| ≤ <paramref name="limit"/> (Coulomb) if it lies
+    /// outside; in a planar step p_2 = 0 and the disc is the interval [−limit, limit].
+    /// </summary>
+    private static void ClampFriction(ref float friction1, ref float friction2, float limit)
     {
-        float squared = c.FrictionImpulse1 * c.FrictionImpulse1 + c.FrictionImpulse2 * c.FrictionImpulse2;
+        float squared = friction1 * friction1 + friction2 * friction2;
         if (squared > limit * limit)
         {
             float scale = squared > 0 ? limit / MathF.Sqrt(squared) : 0f;
-            c.FrictionImpulse1 *= scale;
-            c.FrictionImpulse2 *= scale;
+            friction1 *= scale;
+            friction2 *= scale;
         }
     }
 
@@ -382,9 +413,18 @@ public sealed partial class SequentialImpulseSolver
         {
             ref ContactConstraint c = ref _constraints[k];
             ref ContactStepImpulses step = ref _stepImpulses[k];
-            step.Friction = c.FrictionImpulse1 * c.Tangent1 + c.FrictionImpulse2 * c.Tangent2;
             step.Normal += c.NormalImpulse;
-            step.FrictionMagnitude += MathF.Sqrt(c.FrictionImpulse1 * c.FrictionImpulse1 + c.FrictionImpulse2 * c.FrictionImpulse2);
+            if (_planar)
+            {
+                step.Friction = c.FrictionImpulse1 * c.PlanarTangent;
+                step.FrictionMagnitude += MathF.Abs(c.FrictionImpulse1);
+            }
+            else
+            {
+                ref TangentFrame f = ref _frames[k];
+                step.Friction = c.FrictionImpulse1 * f.Tangent1 + c.FrictionImpulse2 * f.Tangent2;
+                step.FrictionMagnitude += MathF.Sqrt(c.FrictionImpulse1 * c.FrictionImpulse1 + c.FrictionImpulse2 * c.FrictionImpulse2);
+            }
         }
     }
 

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
 using SimpleDynamics.Bodies;
 using SimpleDynamics.Collision;
 using SimpleDynamics.Mathematics;
@@ -58,6 +59,74 @@ public class PlanarPathTests
         // The paths differ only in rounding (a clamp to ±μ P_n against a scale onto the disc, t₁ built or normalised).
         Assert.True(largestGap < 1e-6f, $"planar and general paths drift {largestGap} m apart");
         Assert.True(largestSpinGap < 1e-4f * largestSpin, $"spins differ by {largestSpinGap} rad/s");
+    }
+
+    /// <summary>
+    /// The contact constraint the passes stream through holds what a planar step needs in one cache line (64 bytes); a
+    /// 3-D step reads its tangents and spins from a parallel array (ContactConstraint's remarks).
+    /// </summary>
+    [Fact]
+    public void A_contact_constraint_fills_one_cache_line()
+    {
+        Assert.Equal(64, Unsafe.SizeOf<ContactConstraint>());
+        Assert.Equal(72, Unsafe.SizeOf<TangentFrame>());
+    }
+
+    /// <summary>
+    /// A step that begins planar and turns general part-way: a disc at 20 m/s strikes a resting disc, which flies into a
+    /// sphere that sleeps 5 cm off the plane, 10 cm further on, within the same step. The sphere wakes in the impact
+    /// pass, so the substeps after it solve on the general path the contacts the planar path measured, in whose layout
+    /// the spins about z lie where the general path keeps the second tangent's impulse and mass (ContactConstraint).
+    /// Another disc slides on the ground far away, and must follow what it follows when the sphere is awake from the
+    /// start and every step is general.
+    /// </summary>
+    [Fact]
+    public void A_step_that_turns_general_when_a_body_off_the_plane_wakes_solves_its_contacts_as_the_general_path()
+    {
+        (World world, RigidBody slider, RigidBody sphere) = StruckSleeper(sleeperAwake: false);
+        (World general, RigidBody generalSlider, RigidBody generalSphere) = StruckSleeper(sleeperAwake: true);
+        var solver = (SequentialImpulseSolver)world.Responder;
+        var generalSolver = (SequentialImpulseSolver)general.Responder;
+        int turned = 0;
+        float largestGap = 0;
+        for (int step = 0; step < 60; step++)
+        {
+            world.Step(Dt);
+            general.Step(Dt);
+            Assert.False(generalSolver.BeganPlanar);
+            turned += solver.BeganPlanar && !solver.SolvedPlanar ? 1 : 0;
+            Assert.Equal(0f, slider.Position.Z);
+            Assert.Equal(0f, slider.LinearVelocity.Z);
+            Assert.Equal(0f, slider.AngularVelocity.X);
+            Assert.Equal(0f, slider.AngularVelocity.Y);
+            largestGap = MathF.Max(largestGap, Vector3.Distance(slider.Position, generalSlider.Position));
+        }
+
+        Assert.Equal(1, turned);
+        Assert.True(sphere.LinearVelocity.X > 1f && generalSphere.LinearVelocity.X > 1f, "the sphere must have been struck");
+        Assert.True(slider.AngularVelocity.Z < -1f, $"the slider must roll for its friction to mean anything (ω = {slider.AngularVelocity})");
+        Assert.True(largestGap < 1e-5f, $"the slider drifts {largestGap} m from the general path");
+    }
+
+    private static (World World, RigidBody Slider, RigidBody Sphere) StruckSleeper(bool sleeperAwake)
+    {
+        var world = new World(new Vector3(0, -9.81f, 0), new SequentialImpulseSolver(restitution: 0.2f, friction: 0.6f));
+        world.AddPlane(StaticPlane.Ground());
+        RigidBody sphere = world.Add(new RigidBody(1f, 0.3f, new Vector3(0.7f, 0.3f, 0.05f)) { AllowSleep = !sleeperAwake });
+        RigidBody resting = world.Add(Disc(new Vector3(0, 0.3f, 0), Vector3.Zero));
+        RigidBody striker = world.Add(Disc(new Vector3(-3, 0.3f, 0), Vector3.Zero));
+        RigidBody slider = world.Add(Disc(new Vector3(-20, 0.3f, 0), Vector3.Zero));
+        resting.AllowSleep = striker.AllowSleep = slider.AllowSleep = false;
+        for (int step = 0; step < 60; step++)
+        {
+            world.Step(Dt); // the sphere falls asleep, unless it may not
+        }
+
+        Assert.Equal(sleeperAwake, sphere.IsAwake);
+        striker.Position = new Vector3(-0.61f, 0.3f, 0); // 1 cm from the resting disc
+        striker.LinearVelocity = new Vector3(20, 0, 0);
+        slider.LinearVelocity = new Vector3(3, 0, 0); // slides, then rolls
+        return (world, slider, sphere);
     }
 
     private static (World World, RigidBody[] Discs) RubbingDiscs(bool offPlaneWitness)
