@@ -162,9 +162,11 @@ public sealed partial class SequentialImpulseSolver
             RigidBody body = bodies[i];
             _bodies[slot] = SolverBody.Of(body);
             _positions[slot] = body.position;
-            if (float.IsNaN(_inertiaScalars[slot]))
+            if (!_planar && float.IsNaN(_inertiaScalars[slot]))
             {
-                _inverseInertias[slot] = body.inverseInertiaWorld; // it turns with the body; k·1 does not
+                // It turns with the body; k·1 does not, and in a planar step only its z–z entry is read (SolverBody),
+                // which turning about z leaves as it is.
+                _inverseInertias[slot] = body.inverseInertiaWorld;
             }
 
             if (_strips.Count > 1 && !bodies[i].IsDynamic)

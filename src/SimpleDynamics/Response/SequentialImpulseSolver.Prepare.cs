@@ -246,8 +246,8 @@ public sealed partial class SequentialImpulseSolver
             c.NormalMass = InverseOrZero(inverseMassSum); // eq. 16 along n: r × n = 0 for spheres, so J_α = 0
             if (_planar)
             {
-                c.PlanarSpinA = c.RhoA * _inverseInertias[c.A].M33;
-                c.PlanarSpinB = -c.RhoB * _inverseInertias[c.B].M33;
+                c.PlanarSpinA = c.RhoA * a.InverseInertiaZ;
+                c.PlanarSpinB = -c.RhoB * b.InverseInertiaZ;
                 c.TangentMass1 = InverseOrZero(inverseMassSum + c.RhoA * c.PlanarSpinA - c.RhoB * c.PlanarSpinB);
                 c.FrictionImpulse1 = Vectors.Dot(_stepImpulses[k].Friction, c.PlanarTangent);
                 float none = 0;
