@@ -11,9 +11,9 @@ namespace SimpleDynamics.Response;
 /// by a far heavier one leaning on it from the side, or a light disc squeezed in a row between heavy ones on the floor.
 /// Each such correction pushes the body back by a fraction of the other (the cosine between the two normals), so
 /// sweeping again converges, but a whole sweep more is far more work than the few contacts need, and a settled pile
-/// has none. So the contacts still deeper than the slop are put on a queue, and each in turn is corrected as the last
-/// sweep does it (the upper body alone if it carries weight, else split by inverse mass); when a correction moves a
-/// body, those of its touching contacts that it made deeper than the slop join the queue. A light body caged by heavier
+/// has none. So the contacts still deeper than the slop are put on a queue, and each in turn is corrected, split by
+/// inverse mass (not as the last sweep does it, the upper body alone when the contact carries weight); when a
+/// correction moves a body, those of its touching contacts that it made deeper than the slop join the queue. A light body caged by heavier
 /// ones (a 0.016 kg disc on a 4 kg one with 3 and 128 kg discs leaning on it, generated world 746 of 2,000, seed 801)
 /// cannot get out on its own, and corrections split by inverse mass move its neighbours by a hundredth to a ten
 /// thousandth of the depth each: so a body corrected <see cref="CorrectionsBeforeHeld"/> times is held where it is, and
