@@ -250,7 +250,7 @@ public sealed partial class SequentialImpulseSolver
                 c.PlanarSpinB = -c.RhoB * b.InverseInertiaZ;
                 c.TangentMass1 = InverseOrZero(inverseMassSum + c.RhoA * c.PlanarSpinA - c.RhoB * c.PlanarSpinB);
                 c.FrictionImpulse1 = Vectors.Dot(_stepImpulses[k].Friction, c.PlanarTangent);
-                float none = 0;
+                float none = 0; // the disc's clamp with p₂ = 0 rounds as the 3-D path does (Math.Clamp may not)
                 ClampFriction(ref c.FrictionImpulse1, ref none, c.Friction * c.NormalImpulse);
                 continue;
             }
