@@ -78,10 +78,7 @@ public class CrowdLaws
 
         foreach (var s in strikers)
         {
-            (float u, float v, float w) = s.Position;
-            float room = WorldCase.BoxSize - 2 * radius;
-            var position = new Vector3(radius + u * room, radius + v * room, planar ? 0 : radius + w * room);
-            if (placed.Any(b => Vector3.Distance(b.Position, position) < b.Radius + radius + 1e-3f))
+            if (!WorldCase.TryPlace(placed, planar, s.Position, radius, out Vector3 position))
             {
                 continue;
             }

@@ -27,6 +27,18 @@ public sealed record WorldCase(
 {
     public const float BoxSize = 4f;
 
+    /// <summary>
+    /// Where a generated body of <paramref name="radius"/> goes in the box, from a seed (u, v, w) in the unit cube (w
+    /// ignored in the plane); false if it would overlap one of <paramref name="placed"/> (its seed is then dropped).
+    /// </summary>
+    public static bool TryPlace(IEnumerable<BodySpec> placed, bool planar, (float U, float V, float W) seed, float radius, out Vector3 position)
+    {
+        float room = BoxSize - 2 * radius;
+        position = new Vector3(radius + seed.U * room, radius + seed.V * room, planar ? 0 : radius + seed.W * room);
+        Vector3 at = position;
+        return !placed.Any(b => Vector3.Distance(b.Position, at) < b.Radius + radius + 1e-3f);
+    }
+
     public World Build(out RigidBody[] bodies)
     {
         var solver = new SequentialImpulseSolver(Restitution, Friction) { RestitutionThreshold = Threshold };
@@ -86,10 +98,8 @@ public class WorldLaws
         var placed = new List<BodySpec>();
         foreach (var s in seeds)
         {
-            (float u, float v, float w) = s.Position;
-            float r = s.Radius, room = WorldCase.BoxSize - 2 * r;
-            var position = new Vector3(r + u * room, r + v * room, planar ? 0 : r + w * room);
-            if (placed.Any(b => Vector3.Distance(b.Position, position) < b.Radius + r + 1e-3f))
+            float r = s.Radius;
+            if (!WorldCase.TryPlace(placed, planar, s.Position, r, out Vector3 position))
             {
                 continue;
             }
