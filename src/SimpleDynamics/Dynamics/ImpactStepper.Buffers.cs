@@ -126,6 +126,7 @@ internal sealed partial class ImpactStepper
         Buffers.EnsureCapacity(ref _substepStart, n);
         Buffers.EnsureCapacity(ref _startChord, n);
         Buffers.EnsureCapacity(ref _motion, n);
+        Buffers.EnsureCapacity(ref _flight, n);
         Buffers.EnsureCapacity(ref _held, n);
         Buffers.EnsureCapacity(ref _head, n);
         Buffers.EnsureCapacity(ref _anchorDistance, n);
@@ -154,6 +155,7 @@ internal sealed partial class ImpactStepper
         Buffers.ShrinkTo(ref _substepStart, capacity, 0);
         Buffers.ShrinkTo(ref _startChord, capacity, 0);
         Buffers.ShrinkTo(ref _motion, capacity, 0);
+        Buffers.ShrinkTo(ref _flight, capacity, 0);
         Buffers.ShrinkTo(ref _held, capacity, 0);
         Buffers.ShrinkTo(ref _head, capacity, 0);
         Buffers.ShrinkTo(ref _anchorDistance, capacity, 0);

@@ -68,8 +68,8 @@ internal sealed partial class ImpactStepper
         }
 
         _motion[i].Chord = Vector3.Zero;
-        _motion[i].A = Vector3.Zero;
-        _motion[i].Impacts = ImpactsPerBody;
+        _flight[i].A = Vector3.Zero;
+        _flight[i].Impacts = ImpactsPerBody;
     }
 
     /// <summary>
@@ -91,11 +91,11 @@ internal sealed partial class ImpactStepper
             return;
         }
 
-        float along = Vectors.Dot(_motion[i].U, acceleration) / squared; // the time a would take to give U its part along a
+        float along = Vectors.Dot(_flight[i].U, acceleration) / squared; // the time a would take to give U its part along a
         float forgone = MathF.Min((float)(_h - _motion[i].T), along);
         if (forgone > 0)
         {
-            _motion[i].U -= forgone * acceleration;
+            _flight[i].U -= forgone * acceleration;
         }
     }
 
@@ -117,7 +117,7 @@ internal sealed partial class ImpactStepper
         Array.Clear(_jamState, 0, _contactCount);
         for (int i = 0; i < _bodyCount; i++)
         {
-            if (_motion[i].Impacts >= ImpactsPerBody)
+            if (_flight[i].Impacts >= ImpactsPerBody)
             {
                 MarkContacts(i);
             }
@@ -259,7 +259,7 @@ internal sealed partial class ImpactStepper
     private void SlowFarther(ref Contact contact, int a, int b, bool moveA)
     {
         Vector3 n = contact.Normal;
-        float closing = Vectors.Dot(_motion[a].U - _motion[b].U, n);
+        float closing = Vectors.Dot(_flight[a].U - _flight[b].U, n);
         if (closing >= 0)
         {
             return;
@@ -267,25 +267,25 @@ internal sealed partial class ImpactStepper
 
         if (moveA)
         {
-            float slowing = MathF.Min(-closing, MathF.Max(-Vectors.Dot(_motion[a].U, n), 0f)); // A's speed into B, at most
-            _motion[a].U += slowing * n;
-            contact.BodyA.linearVelocity = _motion[a].U;
+            float slowing = MathF.Min(-closing, MathF.Max(-Vectors.Dot(_flight[a].U, n), 0f)); // A's speed into B, at most
+            _flight[a].U += slowing * n;
+            contact.BodyA.linearVelocity = _flight[a].U;
             contact.NormalImpulse += slowing / contact.BodyA.inverseMass;
         }
         else
         {
-            float slowing = MathF.Min(-closing, MathF.Max(Vectors.Dot(_motion[b].U, n), 0f)); // B's speed into A, at most
-            _motion[b].U -= slowing * n;
-            contact.BodyB.linearVelocity = _motion[b].U;
+            float slowing = MathF.Min(-closing, MathF.Max(Vectors.Dot(_flight[b].U, n), 0f)); // B's speed into A, at most
+            _flight[b].U -= slowing * n;
+            contact.BodyB.linearVelocity = _flight[b].U;
             contact.NormalImpulse += slowing / contact.BodyB.inverseMass;
         }
     }
 
     private void JoinJam(int i)
     {
-        if (_motion[i].Impacts < ImpactsPerBody)
+        if (_flight[i].Impacts < ImpactsPerBody)
         {
-            _motion[i].Impacts = ImpactsPerBody;
+            _flight[i].Impacts = ImpactsPerBody;
             MarkContacts(i);
         }
     }

@@ -71,8 +71,8 @@ internal sealed partial class ImpactStepper
             {
                 double mass = 1.0 / bodies[i].inverseMass;
                 lump.Mass += mass;
-                lump.MassMoment += mass * _motion[i].PreciseX;
-                lump.Momentum += mass * new Vector3D(_motion[i].U);
+                lump.MassMoment += mass * _flight[i].PreciseX;
+                lump.Momentum += mass * new Vector3D(_flight[i].U);
                 lump.Anchored |= _anchorDistance[i] != int.MaxValue;
             }
         }
@@ -87,8 +87,8 @@ internal sealed partial class ImpactStepper
             }
 
             double mass = 1.0 / bodies[i].inverseMass;
-            Vector3D r = _motion[i].PreciseX - lump.MassMoment / lump.Mass;
-            Vector3D u = new Vector3D(_motion[i].U) - lump.Momentum / lump.Mass;
+            Vector3D r = _flight[i].PreciseX - lump.MassMoment / lump.Mass;
+            Vector3D u = new Vector3D(_flight[i].U) - lump.Momentum / lump.Mass;
             lump.AngularMomentum += mass * Vector3D.Cross(r, u);
             double r2 = r.LengthSquared;
             lump.Jxx += mass * (r2 - r.X * r.X);
@@ -116,10 +116,10 @@ internal sealed partial class ImpactStepper
                 continue;
             }
 
-            Vector3D r = _motion[i].PreciseX - lump.MassMoment / lump.Mass;
+            Vector3D r = _flight[i].PreciseX - lump.MassMoment / lump.Mass;
             Vector3D v = lump.Momentum / lump.Mass + Vector3D.Cross(lump.Spin, r);
-            _motion[i].U = v.Rounded;
-            bodies[i].linearVelocity = _motion[i].U;
+            _flight[i].U = v.Rounded;
+            bodies[i].linearVelocity = _flight[i].U;
         }
     }
 

@@ -30,7 +30,7 @@ internal sealed partial class ImpactStepper
     /// </summary>
     private void MeasureInDouble(ref Contact contact, int a, int b, ReadOnlySpan<StaticPlane> planes)
     {
-        Vector3D centreA = _motion[a].PreciseX, normal;
+        Vector3D centreA = _flight[a].PreciseX, normal;
         double radiusA = _motion[a].Radius, depth;
         if (contact.IsPlaneContact)
         {
@@ -40,7 +40,7 @@ internal sealed partial class ImpactStepper
         }
         else
         {
-            depth = ContactGeometry.Unchecked.CirclePenetration(centreA, radiusA, _motion[b].PreciseX, _motion[b].Radius, out normal);
+            depth = ContactGeometry.Unchecked.CirclePenetration(centreA, radiusA, _flight[b].PreciseX, _motion[b].Radius, out normal);
         }
 
         contact.Normal = normal.Rounded;

@@ -16,31 +16,31 @@ internal sealed partial class ImpactStepper
         _motion[i].X = body.position;
         _motion[i].Radius = body.radius;
         _held[i] = HeldByContacts(body.linearVelocity, _forcedVelocity[i]);
-        _motion[i].PreciseX = _noGravity ? body.PreciseCentre : new Vector3D(body.position);
+        _flight[i].PreciseX = _noGravity ? body.PreciseCentre : new Vector3D(body.position);
         if (!_held[i])
         {
             // Free flight: from v₀ to v₁ at the uniform rate of gravity and forces, along a parabola.
-            _motion[i].U = _startVelocity[i];
-            _motion[i].A = (body.linearVelocity - _startVelocity[i]) / h;
+            _flight[i].U = _startVelocity[i];
+            _flight[i].A = (body.linearVelocity - _startVelocity[i]) / h;
             _motion[i].Chord = 0.5f * (_startVelocity[i] + body.linearVelocity);
         }
         else
         {
             // Held by resting contacts: it moves with the velocity the responder left (semi-implicit Euler),
             // which is what keeps a pile from sinking into itself.
-            _motion[i].U = _motion[i].Chord = body.linearVelocity;
-            _motion[i].A = Vector3.Zero;
+            _flight[i].U = _motion[i].Chord = body.linearVelocity;
+            _flight[i].A = Vector3.Zero;
         }
 
         _motion[i].T = 0;
         _motion[i].Version = 0;
-        _motion[i].Impacts = 0;
+        _flight[i].Impacts = 0;
         if (body.Type == BodyType.Static)
         {
-            _motion[i].U = _motion[i].A = _motion[i].Chord = Vector3.Zero;
+            _flight[i].U = _flight[i].A = _motion[i].Chord = Vector3.Zero;
         }
 
-        _substepStart[i] = _motion[i].PreciseX;
+        _substepStart[i] = _flight[i].PreciseX;
         _startChord[i] = _motion[i].Chord;
     }
 
@@ -61,7 +61,7 @@ internal sealed partial class ImpactStepper
     {
         if (!_held[i])
         {
-            _motion[i].A = ForcedAcceleration(i);
+            _flight[i].A = ForcedAcceleration(i);
         }
     }
 
@@ -106,12 +106,12 @@ internal sealed partial class ImpactStepper
             return;
         }
 
-        Vector3 velocityB = b >= 0 ? _motion[b].U : Vector3.Zero;
-        float separating = Vectors.Dot(_motion[a].U - velocityB, n);
-        float pressing = Vectors.Dot(_motion[resting].A, into);
-        if (pressing > 0 && separating <= (float)ClosingTolerance * (Vectors.Length(_motion[a].U) + Vectors.Length(velocityB)))
+        Vector3 velocityB = b >= 0 ? _flight[b].U : Vector3.Zero;
+        float separating = Vectors.Dot(_flight[a].U - velocityB, n);
+        float pressing = Vectors.Dot(_flight[resting].A, into);
+        if (pressing > 0 && separating <= (float)ClosingTolerance * (Vectors.Length(_flight[a].U) + Vectors.Length(velocityB)))
         {
-            _motion[resting].A -= pressing * into;
+            _flight[resting].A -= pressing * into;
             RigidBody body = resting == a ? contact.BodyA : contact.BodyB;
             contact.NormalImpulse += pressing * (float)(_h - _motion[resting].T) / body.inverseMass; // what the support gives
         }
@@ -129,16 +129,16 @@ internal sealed partial class ImpactStepper
         float s = (float)span;
         if (_noGravity)
         {
-            _motion[i].PreciseX += span * new Vector3D(_motion[i].Chord);
-            _motion[i].X = _motion[i].PreciseX.Rounded;
+            _flight[i].PreciseX += span * new Vector3D(_motion[i].Chord);
+            _motion[i].X = _flight[i].PreciseX.Rounded;
         }
         else
         {
             _motion[i].X += _motion[i].Chord * s;
-            _motion[i].PreciseX = new Vector3D(_motion[i].X);
+            _flight[i].PreciseX = new Vector3D(_motion[i].X);
         }
 
-        _motion[i].U += _motion[i].A * s;
+        _flight[i].U += _flight[i].A * s;
         _motion[i].T = time;
         Vector3 w = body.angularVelocity;
         if (w != Vector3.Zero)

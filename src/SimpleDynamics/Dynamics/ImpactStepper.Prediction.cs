@@ -103,7 +103,7 @@ internal sealed partial class ImpactStepper
                 // The same in double precision (see Precision in ImpactStepper.cs).
                 Vector3D chordA = new(motionA.Chord), chordB = new(motionB.Chord);
                 relative = chordA - chordB;
-                d = motionA.PreciseX + (t0 - motionA.T) * chordA - (motionB.PreciseX + (t0 - motionB.T) * chordB);
+                d = _flight[a].PreciseX + (t0 - motionA.T) * chordA - (_flight[b].PreciseX + (t0 - motionB.T) * chordB);
                 if (relative.LengthSquared == 0 || Vector3D.Dot(d, relative) >= 0)
                 {
                     return;
@@ -279,7 +279,7 @@ internal sealed partial class ImpactStepper
         }
 
         double gap = limit - (_noGravity
-            ? ContactGeometry.Unchecked.PlanePenetration(_motion[a].PreciseX, contact.BodyA.radius, contact.Normal, contact.PlaneOffset)
+            ? ContactGeometry.Unchecked.PlanePenetration(_flight[a].PreciseX, contact.BodyA.radius, contact.Normal, contact.PlaneOffset)
             : contact.BodyA.radius - ((double)Vectors.Dot(contact.Normal, _motion[a].X) - contact.PlaneOffset));
         return gap <= 0 ? _motion[a].T : _motion[a].T + gap / -closing;
     }

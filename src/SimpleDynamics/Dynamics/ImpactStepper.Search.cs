@@ -59,7 +59,7 @@ internal sealed partial class ImpactStepper
         Searches++;
         RigidBody body = step.Bodies[i];
         Vector3 end = _motion[i].X + _motion[i].Chord * (float)(_h - _motion[i].T);
-        float speed = MathF.Max(Vectors.Length(_motion[i].Chord), Vectors.Length(_motion[i].U + _motion[i].A * (float)(_h - _motion[i].T)));
+        float speed = MathF.Max(Vectors.Length(_motion[i].Chord), Vectors.Length(_flight[i].U + _flight[i].A * (float)(_h - _motion[i].T)));
         _reach[i] = MathF.Max(2 * _reach[i], Vectors.Distance(end, _sphereCentre[i]) + speed * stepTimeLeft);
         EnsureLinked();
         Vector3 start = _sphereCentre[i];
