@@ -67,6 +67,21 @@ internal sealed class PairSet<T>
         }
     }
 
+    /// <summary>
+    /// If the pair at <paramref name="index"/> has key <paramref name="key"/>, replaces its item with
+    /// <paramref name="item"/> and returns true: the pair stays where it is, and the table as it is.
+    /// </summary>
+    public bool TryRenew(int index, ulong key, in T item)
+    {
+        if ((uint)index >= (uint)Count || _keys[index] != key)
+        {
+            return false;
+        }
+
+        _items[index] = item;
+        return true;
+    }
+
     public bool Contains(ulong key)
     {
         int mask = _slots.Length - 1;

@@ -149,8 +149,12 @@ public sealed partial class World
             _stillTouching[position] = false;
         }
 
-        touching.TruncateTo(touching.HeldCount);
-
+        // This step's pairs are added after the held ones. Those that come in last step's order, at last step's
+        // places, are kept where they are (only their items are renewed); the first pair out of place drops the rest
+        // of last step's from the set, and from there on pairs are added by key. A settled pile keeps every pair, and
+        // its set's table is neither emptied nor filled again.
+        int inPlace = touching.HeldCount; // this step's pairs so far, all at last step's places
+        bool inOrder = true;
         foreach (ref readonly Contact contact in Collisions.Contacts)
         {
             bool isPlane = contact.IsPlaneContact;
@@ -172,14 +176,30 @@ public sealed partial class World
                 ? PairSet<ContactEvent>.PlanePairKey(contact.BodyA.Id, planeIndex)
                 : PairSet<ContactEvent>.BodyPairKey(contact.BodyA.Id, bodyB!.Id);
             var pair = new ContactEvent(contact.BodyA, bodyB, planeIndex);
-            if (!touching.Add(key, pair))
+            int index;
+            if (inOrder && touching.TryRenew(inPlace, key, pair))
             {
-                continue;
+                index = inPlace++;
+            }
+            else
+            {
+                if (inOrder)
+                {
+                    touching.TruncateTo(inPlace);
+                    inOrder = false;
+                }
+
+                if (!touching.Add(key, pair))
+                {
+                    continue;
+                }
+
+                index = touching.Count - 1;
             }
 
-            Buffers.EnsureCapacity(ref _touchContacts, touching.Count);
-            _touchContacts[touching.Count - 1] = contact;
-            int before = previous.Find(touching.Count - 1 - touching.HeldCount, key);
+            Buffers.EnsureCapacity(ref _touchContacts, index + 1);
+            _touchContacts[index] = contact;
+            int before = previous.Find(index - touching.HeldCount, key);
             if (before < 0)
             {
                 events.AddBegin(pair);
@@ -188,6 +208,11 @@ public sealed partial class World
             {
                 _stillTouching[before] = true;
             }
+        }
+
+        if (inOrder)
+        {
+            touching.TruncateTo(inPlace); // last step's pairs after the last found in place touch no more
         }
 
         for (int i = 0; i < previous.Count; i++)

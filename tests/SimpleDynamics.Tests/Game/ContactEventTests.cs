@@ -133,7 +133,8 @@ public class ContactEventTests
     /// <summary>
     /// Over generated runs (filters, sensors, statics and kinematics in a box, bodies removed midway): every end
     /// has an earlier begin, no pair begins twice without ending, the touching set is exactly the begins minus
-    /// the ends, and it is exactly the contacts with penetration ≥ −tolerance or a push.
+    /// the ends, and it is exactly the contacts with penetration ≥ −tolerance or a push, each body's listed as this
+    /// step measured them.
     /// </summary>
     [Fact]
     public void Begin_and_end_events_balance_and_match_the_touching_contacts()
@@ -184,12 +185,26 @@ public class ContactEventTests
                 Law.Holds(expected.SetEquals(now), $"step {step}: {expected.Count} contacts touch, {now.Count} reported touching");
                 Law.Holds(now.Count == events.Touching.Length, $"step {step}: a pair listed twice");
 
-                // Each body's contacts are the touching pairs that name it.
+                // Each body's contacts are the touching pairs that name it, as this step measured them (a pair that
+                // touched last step too is listed with this step's contact, not last step's).
+                var measured = new Dictionary<(int, int), float>();
+                foreach (ref readonly Contact c in world.Collisions.Contacts)
+                {
+                    measured.TryAdd(Pairs.Key(c), c.Penetration);
+                }
+
                 foreach (RigidBody body in world.Bodies)
                 {
                     int count = world.ContactsOf(body, Span<Contact>.Empty);
                     int listed = events.Touching.ToArray().Count(e => e.Involves(body));
                     Law.Holds(count == listed, $"step {step}: ContactsOf({body}) = {count}, touching pairs naming it {listed}");
+                    var contacts = new Contact[count];
+                    world.ContactsOf(body, contacts);
+                    foreach (Contact c in contacts)
+                    {
+                        Law.Holds(measured.TryGetValue(Pairs.Key(c), out float depth) && depth == c.Penetration,
+                            $"step {step}: ContactsOf({body}) lists {Pairs.Key(c)} at depth {c.Penetration}, not as this step measured it");
+                    }
                 }
             }
         }, seed: 1102, maxTest: 60);
