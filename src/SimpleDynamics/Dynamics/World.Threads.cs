@@ -18,7 +18,8 @@ public sealed partial class World
     /// sweeps a pile of at least 8,192 contacts strip after strip, then the contacts between strips (see SweepStrips.cs),
     /// and threads sweep the strips at once. Only the velocity and position passes of substeps that need more than one
     /// velocity sweep are shared (a landing or stirring pile), and the measuring of the contacts in the substep after
-    /// such a one; a smaller pile, a settled one, and every other stage of the step run on the caller's thread.
+    /// such a one, or those of every substep in a pile of at least 32,768 contacts; a smaller pile, a smaller settled
+    /// one, and every other stage of the step run on the caller's thread.
     /// </summary>
     /// <remarks>
     /// Setting a larger count starts the workers; setting 1 stops them, as does the world being collected. During a

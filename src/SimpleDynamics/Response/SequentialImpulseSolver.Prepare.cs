@@ -159,8 +159,9 @@ public sealed partial class SequentialImpulseSolver
     /// bodies most contacts are only speculative (the smash solves about one in ten), and the sweeps then visit only those solved.
     /// </summary>
     /// <remarks>
-    /// Each contact is measured on its own, so a pile whose last substep ran in strips (it is stirring) is measured in
-    /// strips on the world's threads (SequentialImpulseSolver.Strips.cs); the list comes out the same.
+    /// Each contact is measured on its own, so a pile whose last substep ran in strips (it is stirring), or one large
+    /// enough for every substep to (<see cref="SharedPileContacts"/>), is measured in strips on the world's threads
+    /// (SequentialImpulseSolver.Strips.cs); the list comes out the same.
     /// </remarks>
     private void MeasureConstraints(ReadOnlySpan<Contact> contacts)
     {
@@ -170,8 +171,9 @@ public sealed partial class SequentialImpulseSolver
             Buffers.EnsureCapacity(ref _frames, contacts.Length);
         }
 
-        bool inStrips = _substepInStrips && _threads is not null && _strips.Count > 1; // the last substep's
-        _substepInStrips = false;
+        bool shared = SharesEverySubstep(contacts.Length);
+        bool inStrips = shared || (_substepInStrips && _threads is not null && _strips.Count > 1); // or as the last substep was
+        _substepInStrips = shared;
         _bandsAssigned = false;
         if (inStrips)
         {

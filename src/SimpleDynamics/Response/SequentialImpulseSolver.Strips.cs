@@ -55,8 +55,9 @@ public sealed partial class SequentialImpulseSolver
     }
 
     /// <summary>
-    /// Whether this substep's passes over every contact run on several threads: only once the first sweep has found
-    /// the contacts unsolved (<see cref="SplitSubstep"/>). A settled pile (one sweep a substep) stays on one thread:
+    /// Whether this substep's passes over every contact run on several threads: from its start in a pile of
+    /// <see cref="SharedPileContacts"/> or more, else once the first sweep has found the contacts unsolved
+    /// (<see cref="SplitSubstep"/>). A smaller settled pile (one sweep a substep) stays on one thread:
     /// there a pass is over in about 100 µs for 9,000 contacts, and a worker that must first fetch its half of the
     /// contacts and bodies from the caller's cache takes about as long (measured on a settled 4,000-disc pit: the warm
     /// start on two threads 148 µs against 67 µs on one, a sweep 115 µs against 132 µs). A pile that needs many sweeps
@@ -66,6 +67,20 @@ public sealed partial class SequentialImpulseSolver
 
     /// <summary>Lets this substep's remaining passes over every contact run in strips, if the step has strips and threads.</summary>
     private void SplitSubstep() => _substepInStrips = _threads is not null && _strips.Count > 1;
+
+    /// <summary>
+    /// The contacts from which every substep's passes run in strips, a settled pile's too: there each thread's half of
+    /// the contacts and bodies is too large to stay in the caller's cache anyway, so the workers fetch little that one
+    /// thread would not. Measured on settled 2-D pits, strips of 2 on two threads, against sharing only the substeps
+    /// that need more than one sweep: the 16,000-disc pit (37,000 contacts) stepped 3–7 % faster, the 8,000-disc one
+    /// (about 17,500) 6 % slower, and the 4,000-disc one (8,800) slower still (see <see cref="_substepInStrips"/>);
+    /// benchmarks/README.md, twenty-third session.
+    /// </summary>
+    /// <remarks>Settable for tests, which share every substep of a small pile so.</remarks>
+    internal int SharedPileContacts { get; set; } = 32_768;
+
+    /// <summary>Whether a pile of <paramref name="contacts"/> shares every substep's passes among threads (see <see cref="SharedPileContacts"/>).</summary>
+    private bool SharesEverySubstep(int contacts) => _threads is not null && _strips.Count > 1 && contacts >= SharedPileContacts;
 
     /// <summary>
     /// Where each group of contacts (<see cref="SweepStrips.Group"/>) begins in <see cref="_active"/>, which lists the

@@ -24,15 +24,18 @@ public class ThreadTests
     /// <summary>
     /// A pour of mixed sizes with a static post and a kinematic paddle in it, cut into up to 8 strips (64 contacts a
     /// strip instead of 4,096, so that a small pit is cut), on 1, 2, 3 and 4 threads: every body, every step, every bit.
-    /// (One thread and strips: the same order; threads without strips have nothing to share.)
+    /// (One thread and strips: the same order; threads without strips have nothing to share.) With
+    /// <paramref name="everySubstep"/>, the pile counts as large enough to share every substep's passes, a settled
+    /// one's too (SequentialImpulseSolver.SharedPileContacts).
     /// </summary>
     [Theory]
-    [InlineData(true, 600)]
-    [InlineData(false, 729)]
-    public void A_pile_in_strips_steps_bit_for_bit_alike_on_one_to_four_threads(bool planar, int count)
+    [InlineData(true, 600, false)]
+    [InlineData(false, 729, false)]
+    [InlineData(true, 600, true)]
+    public void A_pile_in_strips_steps_bit_for_bit_alike_on_one_to_four_threads(bool planar, int count, bool everySubstep)
     {
-        World[] worlds = Enumerable.Range(1, 4).Select(threads => Pit(planar, count, threads)).ToArray();
-        int cutSteps = 0, seams = 0, localSweeps = 0, positionSweeps = 0;
+        World[] worlds = Enumerable.Range(1, 4).Select(threads => Pit(planar, count, threads, everySubstep)).ToArray();
+        int cutSteps = 0, seams = 0, localSweeps = 0, positionSweeps = 0, settledInStrips = 0;
         try
         {
             for (int step = 1; step <= Steps; step++)
@@ -48,7 +51,10 @@ public class ThreadTests
                     cutSteps++;
                     seams += solver.SeamContacts;
                     localSweeps += solver.LocalSweepsThisStep; // shared by the threads in a cut step (SweepMarkedRange)
-                    positionSweeps += ((SequentialImpulseSolver)worlds[1].Responder).PositionSweepsInStripsThisStep; // on 2 threads (CorrectPositionRange)
+                    var onTwo = (SequentialImpulseSolver)worlds[1].Responder;
+                    positionSweeps += onTwo.PositionSweepsInStripsThisStep; // on 2 threads (CorrectPositionRange)
+                    bool settled = onTwo.SweepsThisStep == worlds[1].Substeps; // one velocity sweep a substep
+                    settledInStrips += settled && onTwo.PositionSweepsInStripsThisStep > 0 ? 1 : 0;
                 }
 
                 for (int w = 1; w < worlds.Length; w++)
@@ -66,13 +72,14 @@ public class ThreadTests
             }
         }
 
-        _output.WriteLine($"{cutSteps} of {Steps} steps cut into strips, {seams / (double)Math.Max(cutSteps, 1):F0} seam contacts a step, {localSweeps} local sweeps and {positionSweeps} position sweeps in strips in them");
+        _output.WriteLine($"{cutSteps} of {Steps} steps cut into strips, {seams / (double)Math.Max(cutSteps, 1):F0} seam contacts a step, {localSweeps} local sweeps and {positionSweeps} position sweeps in strips in them; {settledInStrips} settled steps in strips");
         // The lattice falls for over a second, its neighbours' pairs left out (ImpactStepper.Crowd.cs): too few contacts
         // then to cut. Once it has landed, every step is.
         Assert.True(cutSteps > Steps / 2, $"only {cutSteps} steps were cut into strips");
         Assert.True(seams > 0, "no contact lay across a cut");
         Assert.True(localSweeps > 0, "no local sweep ran in a cut step");
         Assert.True(positionSweeps > 0, "no position sweep ran in strips");
+        Assert.True(everySubstep ? settledInStrips > 0 : settledInStrips == 0, $"{settledInStrips} steps of one sweep a substep ran their position sweeps in strips");
     }
 
     [Fact]
@@ -173,10 +180,15 @@ public class ThreadTests
         }
     }
 
-    private static World Pit(bool planar, int count, int threads)
+    private static World Pit(bool planar, int count, int threads, bool everySubstep = false)
     {
         var solver = new SequentialImpulseSolver { Strips = 8 };
         solver.Cut.ContactsPerStrip = 64;
+        if (everySubstep)
+        {
+            solver.SharedPileContacts = 0;
+        }
+
         World world = Scenes.BallPit(count, planar, seed: 7, radiusSpread: 1.5f, responder: solver);
         world.SleepingEnabled = false;
         float middle = world.Bodies.Average(b => b.Position.X);
