@@ -73,8 +73,8 @@ public sealed partial class SequentialImpulseSolver
     /// the contacts and bodies is too large to stay in the caller's cache anyway, so the workers fetch little that one
     /// thread would not. Measured on settled 2-D pits, strips of 2 on two threads, against sharing only the substeps
     /// that need more than one sweep: the 16,000-disc pit (37,000 contacts) stepped 3–7 % faster, the 8,000-disc one
-    /// (about 17,500) 6 % slower, and the 4,000-disc one (8,800) slower still (see <see cref="_substepInStrips"/>);
-    /// benchmarks/README.md, twenty-third session.
+    /// (about 17,500) 6 % slower; at 4,000 discs (8,800 contacts) the warm start alone took twice as long on two threads
+    /// (see <see cref="_substepInStrips"/>). benchmarks/README.md, twenty-third session.
     /// </summary>
     /// <remarks>Settable for tests, which share every substep of a small pile so.</remarks>
     internal int SharedPileContacts { get; set; } = 32_768;
