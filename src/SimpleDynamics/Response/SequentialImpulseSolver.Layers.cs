@@ -243,23 +243,55 @@ public sealed partial class SequentialImpulseSolver
     {
         float largestChange = 0, largestImpulse = 0, largestSpeedChange = 0;
         bool formed = true, scale = _bandScalePending, gather = _gatheringBands;
-        for (int i = start; i < end; i++)
+#if NET8_0_OR_GREATER
+        var fours = new FourMeasures();
+#endif
+        for (int i = start; i < end;)
         {
-            int k = _active[i];
-            ref ContactConstraint c = ref _constraints[k];
-            if (scale)
+            int count = 1;
+#if NET8_0_OR_GREATER
+            if (_foursPlanned && _fourStarts[i] != 0)
             {
-                c.NormalImpulse = ScaledImpulse(ref c, i);
+                count = 4;
+                for (int p = i; scale && p < i + 4; p++)
+                {
+                    ref ContactConstraint scaled = ref _constraints[_active[p]];
+                    scaled.NormalImpulse = ScaledImpulse(ref scaled, p);
+                }
+
+                SolvePlanarFour(i, out var before, out var after);
+                fours.Add(before, after, _fours[i >> 2].NormalMass);
+            }
+            else
+#endif
+            {
+                int k = _active[i];
+                ref ContactConstraint c = ref _constraints[k];
+                if (scale)
+                {
+                    c.NormalImpulse = ScaledImpulse(ref c, i);
+                }
+
+                largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(k, out float change));
+                largestChange = MathF.Max(largestChange, change);
+                largestImpulse = MathF.Max(largestImpulse, c.NormalImpulse);
             }
 
-            largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(k, out float change));
-            largestChange = MathF.Max(largestChange, change);
-            largestImpulse = MathF.Max(largestImpulse, c.NormalImpulse);
-            if (gather && c.NormalImpulse > 0 && formed)
+            for (int end4 = i + count; i < end4; i++)
             {
-                formed = GatherBand(ref c, _bandOf[i]);
+                ref ContactConstraint c = ref _constraints[_active[i]];
+                if (gather && c.NormalImpulse > 0 && formed)
+                {
+                    formed = GatherBand(ref c, _bandOf[i]);
+                }
             }
         }
+
+#if NET8_0_OR_GREATER
+        largestSpeedChange = FourMeasures.Largest(largestSpeedChange, fours.SpeedChange);
+        largestChange = FourMeasures.Largest(largestChange, fours.Change);
+        largestImpulse = FourMeasures.Largest(largestImpulse, fours.Impulse);
+#endif
 
         _stripResults[slot * Padding] = largestSpeedChange;
         _stripResults[slot * Padding + 1] = largestChange;

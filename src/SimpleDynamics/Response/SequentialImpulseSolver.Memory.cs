@@ -109,5 +109,9 @@ public sealed partial class SequentialImpulseSolver : ITrimmable
         _strips.ShrinkContacts(capacity);
         Buffers.ShrinkTo(ref _contactScratch, capacity, 0);
         Buffers.ShrinkTo(ref _bandOf, capacity, 0);
+        Buffers.ShrinkTo(ref _fourStarts, capacity, 0);
+#if NET8_0_OR_GREATER
+        Buffers.ShrinkTo(ref _fours, capacity / 4 + 1, 0);
+#endif
     }
 }

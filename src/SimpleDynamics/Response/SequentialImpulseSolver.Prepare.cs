@@ -175,6 +175,7 @@ public sealed partial class SequentialImpulseSolver
         bool inStrips = shared || (_substepInStrips && _threads is not null && _strips.Count > 1); // or as the last substep was
         _substepInStrips = shared;
         _bandsAssigned = false;
+        ForgetFours(); // the active contacts are new: plan them again if more sweeps follow
         if (inStrips)
         {
             MeasureInStrips(contacts);

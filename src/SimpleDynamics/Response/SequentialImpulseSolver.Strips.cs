@@ -52,6 +52,7 @@ public sealed partial class SequentialImpulseSolver
         BuildBands,
         ApplyBands,
         Positions,
+        PlanFours,
     }
 
     /// <summary>
@@ -218,28 +219,16 @@ public sealed partial class SequentialImpulseSolver
                 break;
 
             case StripPass.Sweep:
-                foreach (int k in active)
+                for (int i = start; i < end;)
                 {
-                    SolveContact(k);
+                    i += SolveNext(i);
                 }
 
                 break;
 
             case StripPass.MeasuredSweep:
-            {
-                float largestChange = 0, largestImpulse = 0, largestSpeedChange = 0;
-                foreach (int k in active)
-                {
-                    largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(k, out float change));
-                    largestChange = MathF.Max(largestChange, change);
-                    largestImpulse = MathF.Max(largestImpulse, _constraints[k].NormalImpulse);
-                }
-
-                _stripResults[slot * Padding] = largestSpeedChange;
-                _stripResults[slot * Padding + 1] = largestChange;
-                _stripResults[slot * Padding + 2] = largestImpulse;
+                MeasuredSweepRange(slot, start, end);
                 break;
-            }
 
             case StripPass.Shock:
             {
@@ -261,6 +250,12 @@ public sealed partial class SequentialImpulseSolver
             case StripPass.SweepWithBands:
                 SweepWithBandsRange(slot, start, end);
                 break;
+
+#if NET8_0_OR_GREATER
+            case StripPass.PlanFours:
+                PlanFoursRange(slot, start, end);
+                break;
+#endif
 
             case StripPass.BuildBands or StripPass.ApplyBands:
                 BodyShare(pass, _strips.Count); // in place of the seam contacts: the bodies woken during the step

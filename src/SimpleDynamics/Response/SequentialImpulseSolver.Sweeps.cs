@@ -126,6 +126,11 @@ public sealed partial class SequentialImpulseSolver
         SplitSubstep(); // more sweeps follow: worth sharing among threads (see _substepInStrips)
 
         bool converged = _velocityIterations == 1 && change <= SettledTolerance;
+        if (_velocityIterations > 1 || (!converged && _extraSweeps > 0))
+        {
+            PlanFours(); // and worth solving four contacts at once where they move different bodies
+        }
+
         bool local = _extraSweeps > 0 && _gravity != Vector3.Zero && _velocityIterations > 1; // see SequentialImpulseSolver.LocalSweeps.cs
         for (int iteration = 1; iteration < _velocityIterations; iteration++)
         {
@@ -194,6 +199,44 @@ public sealed partial class SequentialImpulseSolver
         }
 
         return largestChange == 0 ? 0 : largestChange / largestImpulse; // +∞ when every impulse fell to zero
+    }
+
+    /// <summary>
+    /// The measured sweep of <see cref="Sweep"/> over <see cref="_active"/>[<paramref name="start"/>..<paramref name="end"/>),
+    /// four contacts at once where this substep's plan has them (SequentialImpulseSolver.Fours.cs); keeps its largest
+    /// changes in the results of <paramref name="slot"/>.
+    /// </summary>
+    private void MeasuredSweepRange(int slot, int start, int end)
+    {
+        float largestChange = 0, largestImpulse = 0, largestSpeedChange = 0;
+#if NET8_0_OR_GREATER
+        var fours = new FourMeasures();
+#endif
+        for (int i = start; i < end;)
+        {
+#if NET8_0_OR_GREATER
+            if (_foursPlanned && _fourStarts[i] != 0)
+            {
+                SolvePlanarFour(i, out var before, out var after);
+                fours.Add(before, after, _fours[i >> 2].NormalMass);
+                i += 4;
+                continue;
+            }
+#endif
+            int k = _active[i++];
+            largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(k, out float change));
+            largestChange = MathF.Max(largestChange, change);
+            largestImpulse = MathF.Max(largestImpulse, _constraints[k].NormalImpulse);
+        }
+
+#if NET8_0_OR_GREATER
+        largestSpeedChange = FourMeasures.Largest(largestSpeedChange, fours.SpeedChange);
+        largestChange = FourMeasures.Largest(largestChange, fours.Change);
+        largestImpulse = FourMeasures.Largest(largestImpulse, fours.Impulse);
+#endif
+        _stripResults[slot * Padding] = largestSpeedChange;
+        _stripResults[slot * Padding + 1] = largestChange;
+        _stripResults[slot * Padding + 2] = largestImpulse;
     }
 
     /// <summary>
