@@ -70,7 +70,8 @@ public sealed partial class SequentialImpulseSolver
 #if NET8_0_OR_GREATER
         if (_foursPlanned && _fourStarts[i] != 0)
         {
-            SolvePlanarFour(i, out _, out _);
+            var unread = new FourMeasures();
+            SolvePlanarFour(i, ref unread);
             return 4;
         }
 #endif
@@ -173,12 +174,11 @@ public sealed partial class SequentialImpulseSolver
 
     /// <summary>
     /// <see cref="SolvePlanarContact"/> for the four contacts planned from place <paramref name="i"/> of
-    /// <see cref="_active"/>, one in each lane; gives their normal impulses before and after. Every line is the scalar
+    /// <see cref="_active"/>, one in each lane, and adds what it changed to <paramref name="measures"/>. Every line is the scalar
     /// path's, lane by lane; its early return (a contact that pushes nothing and has no friction) keeps the lane's
     /// bodies as they were.
     /// </summary>
-    [MethodImpl(MethodImplOptions.AggressiveInlining)] // in the sweeps' loops, where its impulses stay in registers
-    private void SolvePlanarFour(int i, out Vector128<float> oldNormal, out Vector128<float> normal)
+    private void SolvePlanarFour(int i, ref FourMeasures measures)
     {
         ref PlanarFour four = ref _fours[i >> 2];
         ref ContactConstraint c0 = ref _constraints[_active[i]];
@@ -194,14 +194,14 @@ public sealed partial class SequentialImpulseSolver
         var velocityBX = Vector128.Create(b0.Linear.X, b1.Linear.X, b2.Linear.X, b3.Linear.X);
         var velocityBY = Vector128.Create(b0.Linear.Y, b1.Linear.Y, b2.Linear.Y, b3.Linear.Y);
         var spinB = Vector128.Create(b0.Angular.Z, b1.Angular.Z, b2.Angular.Z, b3.Angular.Z);
-        oldNormal = Vector128.Create(c0.NormalImpulse, c1.NormalImpulse, c2.NormalImpulse, c3.NormalImpulse);
+        var oldNormal = Vector128.Create(c0.NormalImpulse, c1.NormalImpulse, c2.NormalImpulse, c3.NormalImpulse);
         var oldFriction = Vector128.Create(c0.FrictionImpulse1, c1.FrictionImpulse1, c2.FrictionImpulse1, c3.FrictionImpulse1);
         Vector128<float> nx = four.NormalX, ny = four.NormalY, zero = Vector128<float>.Zero;
 
         // The normal impulse of eq. 16, accumulated and clamped to ≥ 0 as MathF.Max(x, 0) does (NaN stays NaN).
         Vector128<float> vx = velocityAX - velocityBX, vy = velocityAY - velocityBY;
         Vector128<float> unclamped = oldNormal - four.NormalMass * (vx * nx + vy * ny);
-        normal = Vector128.ConditionalSelect(
+        Vector128<float> normal = Vector128.ConditionalSelect(
             Vector128.GreaterThan(unclamped, zero) | ~Vector128.Equals(unclamped, unclamped), unclamped, zero);
         Vector128<float> pushed = normal - oldNormal;
 
@@ -229,6 +229,7 @@ public sealed partial class SequentialImpulseSolver
         Store(ref c1, ref a1, ref b1, 1, normal, friction, velocityAX, velocityAY, spinA, velocityBX, velocityBY, spinB);
         Store(ref c2, ref a2, ref b2, 2, normal, friction, velocityAX, velocityAY, spinA, velocityBX, velocityBY, spinB);
         Store(ref c3, ref a3, ref b3, 3, normal, friction, velocityAX, velocityAY, spinA, velocityBX, velocityBY, spinB);
+        measures.Add(oldNormal, normal, four.NormalMass);
     }
 
     /// <summary>Writes lane <paramref name="lane"/> back to its contact and bodies.</summary>
@@ -257,6 +258,7 @@ public sealed partial class SequentialImpulseSolver
     {
         public Vector128<float> SpeedChange, Change, Impulse;
 
+        [MethodImpl(MethodImplOptions.AggressiveInlining)] // at the end of SolvePlanarFour
         public void Add(Vector128<float> oldNormal, Vector128<float> normal, Vector128<float> normalMass)
         {
             Vector128<float> change = Vector128.Abs(normal - oldNormal);

@@ -259,8 +259,7 @@ public sealed partial class SequentialImpulseSolver
                     scaled.NormalImpulse = ScaledImpulse(ref scaled, p);
                 }
 
-                SolvePlanarFour(i, out var before, out var after);
-                fours.Add(before, after, _fours[i >> 2].NormalMass);
+                SolvePlanarFour(i, ref fours);
             }
             else
 #endif

@@ -217,8 +217,7 @@ public sealed partial class SequentialImpulseSolver
 #if NET8_0_OR_GREATER
             if (_foursPlanned && _fourStarts[i] != 0)
             {
-                SolvePlanarFour(i, out var before, out var after);
-                fours.Add(before, after, _fours[i >> 2].NormalMass);
+                SolvePlanarFour(i, ref fours);
                 i += 4;
                 continue;
             }
