@@ -40,6 +40,9 @@ namespace SimpleDynamics.Response;
 /// anyway. Without gravity there is no up and down, and the pass is skipped.</para>
 /// <para><b>Memory order.</b> Contacts are put in the order they are solved, bottom-up along gravity, and the bodies'
 /// working copies in the same order, so that a sweep walks memory front to back and carries support up a pile.</para>
+/// <para><b>Four at once.</b> Once a planar substep's first sweep has found the contacts unsolved, its sweeps solve
+/// runs of four consecutive contacts that move eight different bodies in the lanes of one vector: the same order and
+/// the same arithmetic, so the same result bit for bit (SequentialImpulseSolver.Fours.cs).</para>
 /// <para><b>Strips</b> (<see cref="Strips"/>, off by default). A pile of at least 8,192 contacts may be cut into vertical
 /// strips that share no moving body; its contacts are then solved strip after strip, each bottom-up, and the contacts
 /// between strips last, so that <see cref="World.ThreadCount"/> threads can sweep the strips at once with exactly the
