@@ -24,7 +24,8 @@ internal sealed class LoadedBuild
 
     /// <param name="threads">The world's <c>ThreadCount</c>; 1 leaves it alone (a build before threads had none).</param>
     /// <param name="strips">The solver's <c>Strips</c>; 1 leaves it alone likewise.</param>
-    public LoadedBuild(string folder, int bodies, bool planar, int seed, int threads = 1, int strips = 1)
+    /// <param name="extra">The solver's <c>ExtraIterations</c>; −1 leaves its default.</param>
+    public LoadedBuild(string folder, int bodies, bool planar, int seed, int threads = 1, int strips = 1, int extra = -1)
     {
         string path = Path.Combine(Path.GetFullPath(folder), "SimpleDynamics.dll");
         if (!File.Exists(path))
@@ -48,6 +49,11 @@ internal sealed class LoadedBuild
         if (strips != 1)
         {
             Set(responder, "Strips", strips);
+        }
+
+        if (extra >= 0)
+        {
+            Set(responder, "ExtraIterations", extra);
         }
 
         if (threads != 1)

@@ -41,6 +41,7 @@ internal static class Program
     private static readonly Option<int> s_threadsA = Whole("--threads-a", "World.ThreadCount of A's world", 1, least: 1, most: 64);
     private static readonly Option<int> s_threadsB = Whole("--threads-b", "World.ThreadCount of B's world", 1, least: 1, most: 64);
     private static readonly Option<int> s_strips = Whole("--strips", "SequentialImpulseSolver.Strips of both worlds (1, 2, 4 or 8): what threads share", 1, least: 1);
+    private static readonly Option<int> s_extra = Whole("--extra", "SequentialImpulseSolver.ExtraIterations of both worlds (-1: the default)", -1, least: -1);
     private static readonly Option<bool> s_sideBySide = new("--side-by-side")
     {
         Description = "Two copies of each world: A's stepped one after the other, B's at the same time on two threads (one thread each)",
@@ -50,7 +51,7 @@ internal static class Program
     {
         var command = new RootCommand("Steps the same ball pit with two builds of the library in turn and prints B's time over A's.")
         {
-            s_folders, s_bodies, s_3d, s_seed, s_pour, s_rounds, s_steps, s_threadsA, s_threadsB, s_strips, s_sideBySide,
+            s_folders, s_bodies, s_3d, s_seed, s_pour, s_rounds, s_steps, s_threadsA, s_threadsB, s_strips, s_extra, s_sideBySide,
         };
         command.Validators.Add(result =>
         {
@@ -79,7 +80,8 @@ internal static class Program
         command.SetAction(parse => Run(
             parse.GetValue(s_folders)!, parse.GetValue(s_bodies), !parse.GetValue(s_3d), parse.GetValue(s_seed),
             parse.GetValue(s_pour), parse.GetValue(s_rounds), parse.GetValue(s_steps),
-            (parse.GetValue(s_threadsA), parse.GetValue(s_threadsB)), parse.GetValue(s_strips), parse.GetValue(s_sideBySide)));
+            (parse.GetValue(s_threadsA), parse.GetValue(s_threadsB)), parse.GetValue(s_strips), parse.GetValue(s_extra),
+            parse.GetValue(s_sideBySide)));
         return command.Parse(args).Invoke();
     }
 
@@ -101,12 +103,12 @@ internal static class Program
 
     private static int Run(
         DirectoryInfo[] folders, int bodies, bool planar, int seed, int pour, int rounds, int steps, (int A, int B) threads, int strips,
-        bool sideBySide)
+        int extra, bool sideBySide)
     {
-        var a = new LoadedBuild(folders[0].FullName, bodies, planar, seed, threads.A, strips);
-        var b = new LoadedBuild(folders[1].FullName, bodies, planar, seed, threads.B, strips);
-        LoadedBuild? twinA = sideBySide ? new LoadedBuild(folders[0].FullName, bodies, planar, seed, 1, strips) : null;
-        LoadedBuild? twinB = sideBySide ? new LoadedBuild(folders[1].FullName, bodies, planar, seed, 1, strips) : null;
+        var a = new LoadedBuild(folders[0].FullName, bodies, planar, seed, threads.A, strips, extra);
+        var b = new LoadedBuild(folders[1].FullName, bodies, planar, seed, threads.B, strips, extra);
+        LoadedBuild? twinA = sideBySide ? new LoadedBuild(folders[0].FullName, bodies, planar, seed, 1, strips, extra) : null;
+        LoadedBuild? twinB = sideBySide ? new LoadedBuild(folders[1].FullName, bodies, planar, seed, 1, strips, extra) : null;
         AtOnce(a, twinA, pour); // the pours are not timed: two at a time where there are two
         AtOnce(b, twinB, pour);
         bool samePour = a.State().SequenceEqual(b.State()) && SameAs(twinA, a) && SameAs(twinB, b);
