@@ -249,13 +249,33 @@ public sealed partial class SequentialImpulseSolver
         b.Angular.Z = spinB.GetElement(lane);
     }
 
+#endif
+
     /// <summary>
-    /// What a measured sweep keeps of four contacts solved together (<see cref="SolvePlanarFour"/>), lane by lane as
+    /// Keeps in the results of <paramref name="slot"/> what a measured sweep over a range found: the largest change of
+    /// a normal velocity, of a normal impulse, and the largest normal impulse, of the contacts it solved one at a time
+    /// and of those it solved four at once (<paramref name="fours"/>).
+    /// </summary>
+    private void KeepSweepResults(int slot, float largestSpeedChange, float largestChange, float largestImpulse, in FourMeasures fours)
+    {
+#if NET8_0_OR_GREATER
+        largestSpeedChange = FourMeasures.Largest(largestSpeedChange, fours.SpeedChange);
+        largestChange = FourMeasures.Largest(largestChange, fours.Change);
+        largestImpulse = FourMeasures.Largest(largestImpulse, fours.Impulse);
+#endif
+        _stripResults[slot * Padding] = largestSpeedChange;
+        _stripResults[slot * Padding + 1] = largestChange;
+        _stripResults[slot * Padding + 2] = largestImpulse;
+    }
+
+    /// <summary>
+    /// What a measured sweep keeps of four contacts solved together (SolvePlanarFour), lane by lane as
     /// <see cref="SolveContactMeasured"/> does for one: the largest change of a normal velocity, of a normal impulse, and
-    /// the largest normal impulse.
+    /// the largest normal impulse. Empty where nothing is solved in lanes (netstandard2.1).
     /// </summary>
     private struct FourMeasures
     {
+#if NET8_0_OR_GREATER
         public Vector128<float> SpeedChange, Change, Impulse;
 
         [MethodImpl(MethodImplOptions.AggressiveInlining)] // at the end of SolvePlanarFour
@@ -278,6 +298,6 @@ public sealed partial class SequentialImpulseSolver
         public static float Largest(float largest, Vector128<float> lanes) =>
             MathF.Max(MathF.Max(MathF.Max(largest, lanes.GetElement(0)), MathF.Max(lanes.GetElement(1), lanes.GetElement(2))),
                 lanes.GetElement(3));
-    }
 #endif
+    }
 }

@@ -243,9 +243,7 @@ public sealed partial class SequentialImpulseSolver
     {
         float largestChange = 0, largestImpulse = 0, largestSpeedChange = 0;
         bool formed = true, scale = _bandScalePending, gather = _gatheringBands;
-#if NET8_0_OR_GREATER
         var fours = new FourMeasures();
-#endif
         for (int i = start; i < end;)
         {
             int count = 1;
@@ -286,15 +284,7 @@ public sealed partial class SequentialImpulseSolver
             }
         }
 
-#if NET8_0_OR_GREATER
-        largestSpeedChange = FourMeasures.Largest(largestSpeedChange, fours.SpeedChange);
-        largestChange = FourMeasures.Largest(largestChange, fours.Change);
-        largestImpulse = FourMeasures.Largest(largestImpulse, fours.Impulse);
-#endif
-
-        _stripResults[slot * Padding] = largestSpeedChange;
-        _stripResults[slot * Padding + 1] = largestChange;
-        _stripResults[slot * Padding + 2] = largestImpulse;
+        KeepSweepResults(slot, largestSpeedChange, largestChange, largestImpulse, fours);
         _stripResults[slot * Padding + 3] = formed ? 0f : 1f;
     }
 

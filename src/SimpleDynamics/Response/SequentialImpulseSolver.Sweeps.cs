@@ -209,9 +209,7 @@ public sealed partial class SequentialImpulseSolver
     private void MeasuredSweepRange(int slot, int start, int end)
     {
         float largestChange = 0, largestImpulse = 0, largestSpeedChange = 0;
-#if NET8_0_OR_GREATER
         var fours = new FourMeasures();
-#endif
         for (int i = start; i < end;)
         {
 #if NET8_0_OR_GREATER
@@ -228,14 +226,7 @@ public sealed partial class SequentialImpulseSolver
             largestImpulse = MathF.Max(largestImpulse, _constraints[k].NormalImpulse);
         }
 
-#if NET8_0_OR_GREATER
-        largestSpeedChange = FourMeasures.Largest(largestSpeedChange, fours.SpeedChange);
-        largestChange = FourMeasures.Largest(largestChange, fours.Change);
-        largestImpulse = FourMeasures.Largest(largestImpulse, fours.Impulse);
-#endif
-        _stripResults[slot * Padding] = largestSpeedChange;
-        _stripResults[slot * Padding + 1] = largestChange;
-        _stripResults[slot * Padding + 2] = largestImpulse;
+        KeepSweepResults(slot, largestSpeedChange, largestChange, largestImpulse, fours);
     }
 
     /// <summary>
