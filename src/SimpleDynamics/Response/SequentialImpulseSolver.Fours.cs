@@ -61,6 +61,18 @@ public sealed partial class SequentialImpulseSolver
     }
 
     /// <summary>
+    /// How many contacts a sweep solves from place <paramref name="i"/> of <see cref="_active"/> on: four where this
+    /// substep's plan has a four begin (<see cref="PlanFours"/>), else the one there.
+    /// </summary>
+    [MethodImpl(MethodImplOptions.AggressiveInlining)] // in the sweeps' loops
+    private int ContactsSolvedFrom(int i) =>
+#if NET8_0_OR_GREATER
+        _foursPlanned && _fourStarts[i] != 0 ? 4 : 1;
+#else
+        1;
+#endif
+
+    /// <summary>
     /// Solves the contact at place <paramref name="i"/> of <see cref="_active"/>, or the four planned from there
     /// (<see cref="PlanFours"/>); returns how many it solved.
     /// </summary>
@@ -68,7 +80,7 @@ public sealed partial class SequentialImpulseSolver
     private int SolveNext(int i)
     {
 #if NET8_0_OR_GREATER
-        if (_foursPlanned && _fourStarts[i] != 0)
+        if (ContactsSolvedFrom(i) == 4)
         {
             var unread = new FourMeasures();
             SolvePlanarFour(i, ref unread);

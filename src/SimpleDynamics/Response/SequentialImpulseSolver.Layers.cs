@@ -246,32 +246,25 @@ public sealed partial class SequentialImpulseSolver
         var fours = new FourMeasures();
         for (int i = start; i < end;)
         {
-            int count = 1;
-#if NET8_0_OR_GREATER
-            if (_foursPlanned && _fourStarts[i] != 0)
+            int count = ContactsSolvedFrom(i);
+            for (int p = i; scale && p < i + count; p++)
             {
-                count = 4;
-                for (int p = i; scale && p < i + 4; p++)
-                {
-                    ref ContactConstraint scaled = ref _constraints[_active[p]];
-                    scaled.NormalImpulse = ScaledImpulse(ref scaled, p);
-                }
+                ref ContactConstraint scaled = ref _constraints[_active[p]];
+                scaled.NormalImpulse = ScaledImpulse(ref scaled, p);
+            }
 
+#if NET8_0_OR_GREATER
+            if (count == 4)
+            {
                 SolvePlanarFour(i, ref fours);
             }
             else
 #endif
             {
                 int k = _active[i];
-                ref ContactConstraint c = ref _constraints[k];
-                if (scale)
-                {
-                    c.NormalImpulse = ScaledImpulse(ref c, i);
-                }
-
                 largestSpeedChange = MathF.Max(largestSpeedChange, SolveContactMeasured(k, out float change));
                 largestChange = MathF.Max(largestChange, change);
-                largestImpulse = MathF.Max(largestImpulse, c.NormalImpulse);
+                largestImpulse = MathF.Max(largestImpulse, _constraints[k].NormalImpulse);
             }
 
             for (int end4 = i + count; i < end4; i++)

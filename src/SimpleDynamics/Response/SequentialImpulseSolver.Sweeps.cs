@@ -213,7 +213,7 @@ public sealed partial class SequentialImpulseSolver
         for (int i = start; i < end;)
         {
 #if NET8_0_OR_GREATER
-            if (_foursPlanned && _fourStarts[i] != 0)
+            if (ContactsSolvedFrom(i) == 4)
             {
                 SolvePlanarFour(i, ref fours);
                 i += 4;
