@@ -1,9 +1,6 @@
 using System;
-using System.Linq;
-using System.Numerics;
 using FsCheck;
 using FsCheck.Fluent;
-using SimpleDynamics.Bodies;
 using SimpleDynamics.Response;
 using SimpleDynamics.Tests.Properties;
 using Xunit;
@@ -97,9 +94,7 @@ public class FourLaneTests
         world.SleepingEnabled = false;
         if (pour.Obstacles)
         {
-            float middle = world.Bodies.Average(b => b.Position.X);
-            world.Add(RigidBody.CreateStatic(0.3f, new Vector3(middle, 0.6f, 0)));
-            world.Add(RigidBody.CreateKinematic(0.2f, new Vector3(middle - 1f, 1.5f, 0), new Vector3(0.5f, -0f, 0)));
+            PitObstacles.AddPostAndPaddle(world);
         }
 
         world.ThreadCount = pour.Threads;

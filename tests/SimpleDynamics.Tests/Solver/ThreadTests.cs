@@ -1,7 +1,5 @@
 using System;
 using System.Linq;
-using System.Numerics;
-using SimpleDynamics.Bodies;
 using SimpleDynamics.Response;
 using SimpleDynamics.Threading;
 using Xunit;
@@ -191,9 +189,7 @@ public class ThreadTests
 
         World world = Scenes.BallPit(count, planar, seed: 7, radiusSpread: 1.5f, responder: solver);
         world.SleepingEnabled = false;
-        float middle = world.Bodies.Average(b => b.Position.X);
-        world.Add(RigidBody.CreateStatic(0.3f, new Vector3(middle, 0.6f, 0)));
-        world.Add(RigidBody.CreateKinematic(0.2f, new Vector3(middle - 1f, 1.5f, 0), new Vector3(0.5f, -0f, 0))); // −0: see GatherState
+        PitObstacles.AddPostAndPaddle(world);
         world.ThreadCount = threads;
         return world;
     }
