@@ -115,8 +115,17 @@ public sealed partial class SequentialImpulseSolver
     {
         // A pile that the warm start has solved shows it in the first sweep, which then changes no contact's normal
         // velocity by more than a fraction of the tolerance: the other sweeps are left out (a settled pile spends one
-        // sweep a substep). Otherwise only the last fixed sweep's convergence decides whether extra ones follow; those
-        // between need no measuring.
+        // sweep a substep). A 3-D pile that the first sweep leaves within the tolerance the later sweeps converge to,
+        // but not within that fraction (spheres go on turning slowly), spends the other fixed sweeps only on the
+        // contacts of the bodies it changed (SequentialImpulseSolver.LocalSweeps.cs). Otherwise only the last fixed
+        // sweep's convergence decides whether extra ones follow; those between need no measuring.
+        bool local = _extraSweeps > 0 && _gravity != Vector3.Zero && _velocityIterations > 1;
+        bool mayFinishLocally = MayFinishWhereChanging(local);
+        if (mayFinishLocally)
+        {
+            RememberVelocities(); // what the first sweep starts from, to see which bodies it changed
+        }
+
         float change = Sweep();
         if (change <= SolvedTolerance)
         {
@@ -124,6 +133,10 @@ public sealed partial class SequentialImpulseSolver
         }
 
         SplitSubstep(); // more sweeps follow: worth sharing among threads (see _substepInStrips)
+        if (mayFinishLocally && change <= SettledTolerance && FinishesWhereChanging())
+        {
+            return;
+        }
 
         bool converged = _velocityIterations == 1 && change <= SettledTolerance;
         if (_velocityIterations > 1 || (!converged && _extraSweeps > 0))
@@ -131,7 +144,6 @@ public sealed partial class SequentialImpulseSolver
             PlanFours(); // and worth solving four contacts at once where they move different bodies
         }
 
-        bool local = _extraSweeps > 0 && _gravity != Vector3.Zero && _velocityIterations > 1; // see SequentialImpulseSolver.LocalSweeps.cs
         for (int iteration = 1; iteration < _velocityIterations; iteration++)
         {
             if (iteration < _velocityIterations - 1 || _extraSweeps == 0)

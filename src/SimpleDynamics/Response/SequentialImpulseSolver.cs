@@ -27,7 +27,8 @@ namespace SimpleDynamics.Response;
 /// <see cref="VelocityIterations"/> sweeps are done, then up to <see cref="ExtraIterations"/> more until the
 /// impulses stop changing; a pile that the warm start has already solved stops after the first. Under gravity, while
 /// only a few bodies still change, the extra sweeps visit only their contacts (the rest are solved already: see
-/// SequentialImpulseSolver.LocalSweeps.cs). The contacts' normals
+/// SequentialImpulseSolver.LocalSweeps.cs), and so do the fixed sweeps after a first one that left a 3-D pile nearly
+/// solved. The contacts' normals
 /// and lever arms are measured again every substep, so the equal and opposite impulses act along the current line of
 /// contact and conserve angular momentum.</para>
 /// <para><b>Shock propagation</b> (Guendelman, Bridson and Fedkiw, "Nonconvex Rigid Bodies with Stacking",
@@ -129,8 +130,9 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
     /// <summary>
     /// Velocity iterations (Gauss–Seidel sweeps) per substep (≥ 1, default 4), done unless the first finds the contacts
     /// already solved: a sweep that changes no contact by more than a quarter of the <see cref="ConvergenceTolerance"/>
-    /// ends the substep's sweeps (a pile at rest, warm-started, then spends one sweep a substep). More iterations:
-    /// stiffer piles, more time.
+    /// ends the substep's sweeps (a pile at rest, warm-started, then spends one sweep a substep). Under gravity in 3-D,
+    /// a first sweep within half of it is followed by sweeps over the contacts of the bodies it changed only.
+    /// More iterations: stiffer piles, more time.
     /// </summary>
     public int VelocityIterations
     {

@@ -52,4 +52,60 @@ public class LocalSweepTests
         Assert.True(localSolves < fullSweepSolves / 4, $"{localSolves} contacts solved, against {fullSweepSolves} by full sweeps");
         Assert.InRange(residual, 0f, 4f);
     }
+
+    /// <summary>
+    /// A settled pile of spheres goes on turning slowly (nothing resists rolling), so each substep's first sweep finds
+    /// a little to change: within the tolerance the later sweeps converge to, not within the quarter of it that ends
+    /// the substep at once. The fixed sweeps after it then visit only the contacts of the bodies it changed. Stepped
+    /// beside a twin that finishes them over every contact, from the same poured pile, the pile must spend fewer sweeps
+    /// and stay as the twin does: as deep in overlap, as still, and a full sweep after the local ones would change no
+    /// contact by more than a few times the tolerance.
+    /// </summary>
+    [Fact]
+    public void A_settled_pile_of_spheres_finishes_its_fixed_sweeps_where_bodies_change()
+    {
+        World localWorld = PitOfSpheres(finishesLocally: true);
+        World fullWorld = PitOfSpheres(finishesLocally: false);
+        var local = (SequentialImpulseSolver)localWorld.Responder;
+        var full = (SequentialImpulseSolver)fullWorld.Responder;
+        int localSweeps = 0, twinLocalSweeps = 0, sweepsWithLocal = 0, sweepsWithFull = 0;
+        float localDepth = 0, fullDepth = 0;
+        for (int step = 1; step <= 600; step++)
+        {
+            localWorld.Step(Dt);
+            fullWorld.Step(Dt);
+            if (step > 480) // poured and settled: the last two seconds
+            {
+                sweepsWithLocal += local.SweepsThisStep;
+                localSweeps += local.LocalSweepsThisStep;
+                sweepsWithFull += full.SweepsThisStep;
+                twinLocalSweeps += full.LocalSweepsThisStep; // the extra sweeps' (after the fixed ones), which both may spend
+                localDepth = MathF.Max(localDepth, localWorld.Diagnostics.MaxPenetration);
+                fullDepth = MathF.Max(fullDepth, fullWorld.Diagnostics.MaxPenetration);
+            }
+        }
+
+        double localSpeed = RmsSpeed(localWorld), fullSpeed = RmsSpeed(fullWorld);
+        float residual = local.LargestResidualAfterLocalSweeps / local.ConvergenceTolerance;
+        _output.WriteLine($"sweeps in 120 steps: {sweepsWithLocal} ({localSweeps} local) against {sweepsWithFull} ({twinLocalSweeps} local); deepest overlap " +
+            $"{localDepth * 1e3:F3} mm against {fullDepth * 1e3:F3} mm; rms speed {localSpeed:E2} against {fullSpeed:E2} m/s; " +
+            $"largest residual after local sweeps {residual:F2}× the tolerance");
+        Assert.True(localSweeps > twinLocalSweeps + 120, $"{localSweeps} local sweeps against the twin's {twinLocalSweeps}: the fixed sweeps were not finished locally");
+        Assert.True(sweepsWithLocal < 0.8 * sweepsWithFull, $"{sweepsWithLocal} sweeps against {sweepsWithFull}");
+        Assert.InRange(localDepth, 0f, fullDepth + 1e-4f);
+        Assert.InRange(localSpeed, 0, 2 * fullSpeed + 1e-3);
+        Assert.InRange(residual, 0f, 4f);
+    }
+
+    private static World PitOfSpheres(bool finishesLocally)
+    {
+        var solver = new SequentialImpulseSolver { FinishesFirstSweepLocally = finishesLocally, MeasureResidualAfterLocalSweeps = finishesLocally };
+        return Scenes.BallPit(Count3D, planar: false, seed: 1, responder: solver);
+    }
+
+    private const int Count3D = 4000;
+
+    /// <summary>√(2 KE / Σm): the bodies' root-mean-square speed, translation and spin together.</summary>
+    private static double RmsSpeed(World world) =>
+        Math.Sqrt(2 * world.Diagnostics.KineticEnergy / world.Bodies.Sum(b => (double)b.Mass));
 }
