@@ -92,8 +92,12 @@ public sealed partial class SequentialImpulseSolver
     private bool FinishesWhereChanging()
     {
         SweepWhereChanging(_velocityIterations - 1, out bool converged);
+        SubstepsFinishedLocallyThisStep += converged ? 1 : 0;
         return converged;
     }
+
+    /// <summary>Substeps of the step begun last whose fixed sweeps were finished where bodies change (<see cref="FinishesWhereChanging"/>), for tests.</summary>
+    internal int SubstepsFinishedLocallyThisStep { get; private set; }
 
     /// <summary>
     /// Sweeps, up to <paramref name="budget"/> of them, only the contacts of the bodies that changed since the

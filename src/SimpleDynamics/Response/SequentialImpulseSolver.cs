@@ -308,6 +308,7 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
         _prepared = 0;
         SweepsThisStep = 0;
         LocalSweepsThisStep = 0;
+        SubstepsFinishedLocallyThisStep = 0;
         LayerCorrectionsThisStep = 0;
         LocalSolvesThisStep = 0;
         PositionVisitsThisStep = 0;
