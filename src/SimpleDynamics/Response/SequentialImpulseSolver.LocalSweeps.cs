@@ -29,7 +29,7 @@ namespace SimpleDynamics.Response;
 /// goes on turning slowly, and its first sweep a substep often changes a contact by more than the quarter of the
 /// tolerance that would end the substep, but by no more than half, the tolerance the later sweeps converge to. The
 /// other fixed sweeps then visit only the contacts of the bodies the first one changed (see FinishesWhereChanging).
-/// Measured on the settled 4,000-sphere pit: 9 sweeps a step instead of 13, and 10 % less time a step, at the same
+/// Measured on the settled 4,000-sphere pit: 9 sweeps a step instead of 13, and 7–13 % less time a step, at the same
 /// overlap (benchmarks/README.md, twenty-fifth session).</para>
 /// </remarks>
 public sealed partial class SequentialImpulseSolver
