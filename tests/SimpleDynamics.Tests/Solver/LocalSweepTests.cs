@@ -70,11 +70,11 @@ public class LocalSweepTests
         var full = (SequentialImpulseSolver)fullWorld.Responder;
         int finishedLocally = 0, sweepsWithLocal = 0, sweepsWithFull = 0;
         float localDepth = 0, fullDepth = 0;
-        for (int step = 1; step <= 600; step++)
+        for (int step = 1; step <= 420; step++)
         {
             localWorld.Step(Dt);
             fullWorld.Step(Dt);
-            if (step > 480) // poured and settled: the last two seconds
+            if (step > 300) // poured and settled (5 s): the next two seconds
             {
                 sweepsWithLocal += local.SweepsThisStep;
                 finishedLocally += local.SubstepsFinishedLocallyThisStep;
@@ -133,7 +133,7 @@ public class LocalSweepTests
     {
         var solver = new SequentialImpulseSolver { Strips = 2 };
         solver.Cut.ContactsPerStrip = 64;
-        World world = Scenes.BallPit(1000, planar: false, seed: 2, responder: solver);
+        World world = Scenes.BallPit(Count3D, planar: false, seed: 2, responder: solver);
         world.SleepingEnabled = false;
         world.ThreadCount = threads;
         return world;
@@ -145,7 +145,7 @@ public class LocalSweepTests
         return Scenes.BallPit(Count3D, planar: false, seed: 1, responder: solver);
     }
 
-    private const int Count3D = 4000;
+    private const int Count3D = 1000;
 
     /// <summary>√(2 KE / Σm): the bodies' root-mean-square speed, translation and spin together.</summary>
     private static double RmsSpeed(World world) =>
