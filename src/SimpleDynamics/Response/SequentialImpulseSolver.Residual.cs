@@ -141,7 +141,7 @@ public sealed partial class SequentialImpulseSolver
     /// is the larger from 4.2 m away from the origin on (at the default slop): a centre 8 m away is placed to within
     /// 2⁻²⁰ m (0.95 µm), so what the last sweep leaves at the slop there can measure a little beyond it, and no
     /// correction can move it by so little. In the settled 16,000-disc pit about 1,000 contacts ended each step so,
-    /// 95 % of them by less than one unit in the last place, and the queue corrected them again and again, moving
+    /// about 95 % of them by less than one unit in the last place, and the queue corrected them again and again, moving
     /// nothing, until its budget ran out (27,600 corrections a step, a tenth of the step's time).
     /// </summary>
     private bool StaysDeep(ref ContactConstraint c)
