@@ -167,9 +167,10 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
     /// g h, the speed gravity adds in a substep of length h; without gravity, when no normal impulse changed by more
     /// than this fraction of the largest normal impulse (≥ 0, default 1e-3; 0 spends every extra iteration).
     /// Under gravity the sweeps after a substep's first converge within half of it, and the first finds the pile
-    /// already solved within a quarter of it, less in a pile more than 56 bodies deep (in proportion to the depth):
-    /// in a pile the contacts' leftover approach adds up from the floor to the top, and a deep pile held only to the
-    /// tolerance itself kept creeping and never came to rest.
+    /// already solved within a quarter of it; in a pile more than 56 bodies deep both allowances are smaller, the
+    /// first's in proportion to the depth and the others' with its cube: in a pile the contacts' leftover approach
+    /// adds up from the floor to the top, and a deep pile held only to the tolerance itself kept creeping and never
+    /// came to rest.
     /// </summary>
     public float ConvergenceTolerance
     {
