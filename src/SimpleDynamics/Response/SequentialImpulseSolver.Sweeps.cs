@@ -91,9 +91,11 @@ public sealed partial class SequentialImpulseSolver
     /// column's tridiagonal system), so the error left is about L² times the last change; the top of the column sinks by
     /// the sum over its L contacts. Holding that sum to what it is in a pile <see cref="SolvedDepth"/> deep asks the
     /// change to fall as 1/L³. Measured on the 16,000-disc 2-D pit (110–126 deep, sleeping off): with the tolerance
-    /// fixed, pours with seeds 4 and 5 never came to rest (steps 600–1,500 crept at 0.1–1 mm/s root-mean-square, with
-    /// slumps that moved 14,700 discs at once, at 100–700 sweeps a step); with this factor both lay still from about
-    /// step 500 at 11–14 sweeps a step, as did seeds 1 and 2 (benchmarks/README.md, twenty-seventh session).
+    /// fixed, pours with seeds 4 and 5 never came to rest (seed 4 in steps 600–1,500: 0.1–9 mm/s root-mean-square,
+    /// slumps that moved up to 14,700 discs at once, 88–700 sweeps a step); with this factor both lay still from about
+    /// step 480 (under 1 µm per 30 steps), as did seeds 1 and 3, and came down to 11–14 sweeps a step (seed 3 still
+    /// spent 60–300, mostly local, at step 900). Eight times the extra sweeps instead did not stop the creep
+    /// (benchmarks/README.md, twenty-seventh session).
     /// </remarks>
     private float DepthFactor
     {
