@@ -313,6 +313,7 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
         LayerCorrectionsThisStep = 0;
         LocalSolvesThisStep = 0;
         PositionVisitsThisStep = 0;
+        ResidualVisitsThisStep = 0;
         PositionSweepsInStripsThisStep = 0;
         PlannedInFoursThisStep = 0;
         _positionListsCount = -1; // the contacts are new: list them again (SequentialImpulseSolver.Positions.cs)
