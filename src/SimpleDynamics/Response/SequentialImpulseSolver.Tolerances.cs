@@ -20,7 +20,8 @@ public sealed partial class SequentialImpulseSolver
 
     /// <summary>
     /// The depth, in bodies, up to which a pile's first sweep counts it solved within <see cref="SolvedFraction"/> of
-    /// the tolerance; in a deeper pile the allowance falls with the depth (see <see cref="SolvedTolerance"/>).
+    /// the tolerance; in a deeper pile the allowance falls with the depth (see <see cref="SolvedTolerance"/>), and the
+    /// later sweeps' with its cube (see <see cref="DepthFactor"/>).
     /// </summary>
     /// <remarks>
     /// What the first sweep leaves, each contact up a pile's column may leave, and the upper bodies sink by the sum; so
@@ -38,9 +39,13 @@ public sealed partial class SequentialImpulseSolver
     /// contacts already solved, so that no other follows: <see cref="SolvedFraction"/> of the tolerance, and under
     /// gravity, in a pile deeper than <see cref="SolvedDepth"/> bodies, that times <see cref="SolvedDepth"/> / depth.
     /// </summary>
-    private float SolvedTolerance => _gravity != Vector3.Zero && _pileLayers > SolvedDepth
-        ? SolvedFraction * _convergenceTolerance * (SolvedDepth / _pileLayers)
-        : SolvedFraction * _convergenceTolerance;
+    private float SolvedTolerance => SolvedFraction * _convergenceTolerance * DepthRatio;
+
+    /// <summary>
+    /// Under gravity, in a pile deeper than <see cref="SolvedDepth"/> bodies, <see cref="SolvedDepth"/> / depth; 1
+    /// otherwise (no gravity, no pile, or one no deeper).
+    /// </summary>
+    private float DepthRatio => _gravity != Vector3.Zero && _pileLayers > SolvedDepth ? SolvedDepth / _pileLayers : 1f;
 
     /// <summary>
     /// Under gravity, in a pile deeper than <see cref="SolvedDepth"/> bodies, the factor (<see cref="SolvedDepth"/> /
@@ -63,12 +68,7 @@ public sealed partial class SequentialImpulseSolver
     {
         get
         {
-            if (_gravity == Vector3.Zero || !(_pileLayers > SolvedDepth))
-            {
-                return 1f;
-            }
-
-            float ratio = SolvedDepth / _pileLayers;
+            float ratio = DepthRatio;
             return ratio * ratio * ratio;
         }
     }
