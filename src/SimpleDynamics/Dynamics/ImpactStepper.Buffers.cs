@@ -32,6 +32,7 @@ internal sealed partial class ImpactStepper
         }
 
         _linked = true;
+        (_linkedStep, _linkedContacts, _linkedBodies) = (_stepNumber, _contactCount, _bodyCount);
     }
 
     /// <summary>
@@ -136,6 +137,8 @@ internal sealed partial class ImpactStepper
         Buffers.EnsureCapacity(ref _frameCentre, n);
         Buffers.EnsureCapacity(ref _frameReach, n);
         Buffers.EnsureCapacity(ref _keepsToFrame, n);
+        Buffers.EnsureCapacity(ref _sortedAt, n);
+        Buffers.EnsureCapacity(ref _restless, n);
     }
 
     private void EnsureContacts(int count)
@@ -144,6 +147,8 @@ internal sealed partial class ImpactStepper
         Buffers.EnsureCapacity(ref _ends, 2 * count);
         Buffers.EnsureCapacity(ref _jamState, count);
         Buffers.EnsureCapacity(ref _limit, count);
+        Buffers.EnsureCapacity(ref _nearLimit, count);
+        Buffers.EnsureCapacity(ref _toPredict, (count + 63) >> 6);
     }
 
     private void ShrinkBodies(int capacity)
@@ -165,6 +170,9 @@ internal sealed partial class ImpactStepper
         Buffers.ShrinkTo(ref _frameCentre, capacity, 0);
         Buffers.ShrinkTo(ref _frameReach, capacity, 0);
         Buffers.ShrinkTo(ref _keepsToFrame, capacity, 0);
+        Buffers.ShrinkTo(ref _sortedAt, capacity, 0);
+        Buffers.ShrinkTo(ref _restless, capacity, 0);
+        _sortedStep = _linkedStep = -1; // nothing kept: sort and link again
         Buffers.ShrinkTo(ref _leftOutStart, capacity + 1, 0);
     }
 
@@ -175,6 +183,9 @@ internal sealed partial class ImpactStepper
         Buffers.ShrinkTo(ref _jamState, capacity, 0);
         _endsStep = 0; // nothing kept: read them again
         Buffers.ShrinkTo(ref _limit, capacity, 0);
+        Buffers.ShrinkTo(ref _nearLimit, capacity, 0);
+        Buffers.ShrinkTo(ref _toPredict, (capacity + 63) >> 6, 0);
+        _sortedStep = _linkedStep = -1;
     }
 
     /// <summary>Shrinks the lists of the pairs left out (ImpactStepper.Crowd.cs), which are not needed after their step.</summary>

@@ -97,7 +97,9 @@ internal sealed partial class ImpactStepper
     private Contact[] _contacts = Array.Empty<Contact>(); // the step's contacts (CollisionData.Storage), _contactCount of them
     private int _contactCount;
     private int _bodyCount;
-    private bool _linked; // whether _head/_next list each body's contacts yet: only needed once an impact happens
+    private bool _linked; // whether _head/_next list each body's contacts yet: only needed once an impact happens, or a quiet substep
+    private long _linkedStep = -1; // the step, contacts and bodies the lists were made for: they hold for the step's substeps
+    private int _linkedContacts, _linkedBodies;
     private readonly EventQueue _queue = new();
     private double _h;
     private long _stepNumber;
@@ -151,16 +153,20 @@ internal sealed partial class ImpactStepper
         EnsureBodies(n);
         _margin = margin;
         var crowd = new CrowdMotion(Vectors.Length(gravity) * lookahead);
+        BeginScale();
         for (int i = 0; i < n; i++)
         {
             RigidBody body = bodies[i];
+            NoteScale(body);
             float speed = Vectors.Length(body.linearVelocity);
             _sphereCentre[i] = ContactGeometry.Unchecked.PathMiddle(body, lookahead);
             _reach[i] = 0.5f * margin + 0.5f * lookahead * speed;
             crowd.Add(body, speed);
         }
 
+        EndScale();
         ImpactCount = 0;
+        QuietSubsteps = 0;
         SaturatedSubsteps = 0;
         Searches = 0;
         LeaveOutPairsOfTheCrowd(bodies, contacts, crowd, margin, lookahead); // see ImpactStepper.Crowd.cs
@@ -189,23 +195,21 @@ internal sealed partial class ImpactStepper
         _depthCap = DepthCap(responder, _noGravity);
         _supports = responder is SequentialImpulseSolver; // see RestOnImmovable
         int n = bodies.Length;
+        BeginQuietCheck();
         for (int i = 0; i < n; i++)
         {
             StartMotion(bodies[i], i, h);
+            NoteQuiet(bodies[i], i);
         }
 
         _contacts = contacts.Storage;
         _contactCount = contacts.Count;
         _bodyCount = n;
-        _linked = false;
+        _linked = _linkedStep == _stepNumber && _linkedContacts == _contactCount && _linkedBodies == n; // the lists hold for the step's contacts
         EnsureContacts(_contactCount);
         ReadEnds();
         _queue.Clear();
-        for (int k = 0; k < _contactCount; k++)
-        {
-            _limit[k] = float.NaN;
-            Predict(k);
-        }
+        PredictFirstImpacts(); // in a quiet substep only the contacts that can come near their limits (ImpactStepper.Quiet.cs)
 
         for (int i = 0; i < n; i++) // not the bodies a search wakes: they join at the end, at rest
         {
@@ -270,6 +274,7 @@ internal sealed partial class ImpactStepper
             }
         }
 
+        EndQuietSubstep(impacts);
         bodies = step.Bodies; // with any woken by a search (ImpactStepper.Search.cs)
         for (int i = 0; i < _bodyCount; i++)
         {

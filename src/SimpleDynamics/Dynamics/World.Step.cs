@@ -106,6 +106,16 @@ public sealed partial class World
     /// <summary>Impacts answered in the last step (the impact pass), for tests and diagnostics.</summary>
     internal int ImpactCount => _impacts.ImpactCount;
 
+    /// <summary>Substeps of the last step that predicted only the contacts that can come near their limits (ImpactStepper.Quiet.cs), for tests.</summary>
+    internal int QuietSubsteps => _impacts.QuietSubsteps;
+
+    /// <summary>For tests: whether quiet substeps predict only the contacts that can come near their limits (default true).</summary>
+    internal bool PredictQuietly
+    {
+        get => _impacts.PredictQuietly;
+        set => _impacts.PredictQuietly = value;
+    }
+
     /// <summary>Substeps of the last step whose impacts reached the impact pass's limit.</summary>
     internal int SaturatedSubsteps => _impacts.SaturatedSubsteps;
 

@@ -214,7 +214,7 @@ internal sealed class ContactMarks
 #endif
     }
 
-    private static int TrailingZeros(ulong bits)
+    internal static int TrailingZeros(ulong bits)
     {
 #if NETSTANDARD2_1
         int count = 0;
