@@ -51,7 +51,8 @@ internal sealed partial class ImpactStepper
     private int _restlessCount, _slowCount;
     private long _sortedStep = -1; // the step whose contacts were sorted (−1: none are)
     private int _sortedContacts, _sortedBodies;
-    private float _quietMargin, _calm2; // m, and (m/2 − δ)² (see EndScale)
+    private float _farMargin, _calm2; // m + δ, and (m/2 − δ)² (see EndScale)
+    private float _substep2; // h², for the substep's chords (see BeginQuietCheck)
 
     // The step's smallest and largest radius and largest coordinate (see NoteScale).
     private float _smallestRadius, _largestRadius, _largestCoordinate;
@@ -75,17 +76,17 @@ internal sealed partial class ImpactStepper
     /// </summary>
     private void NoteScale(RigidBody body)
     {
-        Vector3 x = body.position;
         _smallestRadius = MathF.Min(_smallestRadius, body.radius);
         _largestRadius = MathF.Max(_largestRadius, body.radius);
-        _largestCoordinate = MathF.Max(_largestCoordinate, MathF.Max(MathF.Abs(x.X), MathF.Max(MathF.Abs(x.Y), MathF.Abs(x.Z))));
+        _largestCoordinate = MathF.Max(_largestCoordinate, Vectors.LargestCoordinate(body.position));
     }
 
     /// <summary>Works out m and the reach within which a body is calm, from the step's scale.</summary>
     private void EndScale()
     {
-        _quietMargin = QuietMarginShare * HeldDepthTolerance * _smallestRadius;
-        float calm = 0.5f * _quietMargin - QuietRounding * (_largestCoordinate + _largestRadius);
+        float margin = QuietMarginShare * HeldDepthTolerance * _smallestRadius, rounding = QuietRounding * (_largestCoordinate + _largestRadius);
+        _farMargin = margin + rounding;
+        float calm = 0.5f * margin - rounding;
         _calm2 = calm > 0 ? calm * calm : -1f; // −1: no body is calm (a world too far from the origin for its sizes)
     }
 
@@ -93,6 +94,7 @@ internal sealed partial class ImpactStepper
     private void BeginQuietCheck()
     {
         _restlessCount = _slowCount = 0;
+        _substep2 = (float)(_h * _h);
     }
 
     /// <summary>
@@ -109,7 +111,7 @@ internal sealed partial class ImpactStepper
         }
 
         ref Motion motion = ref _motion[i];
-        float move2 = (float)(_h * _h) * Vectors.LengthSquared(motion.Chord);
+        float move2 = _substep2 * Vectors.LengthSquared(motion.Chord);
         bool held = _held[i];
         _slowCount += held && 2 * move2 <= _calm2 ? 1 : 0;
         if (_sortedStep != _stepNumber || i >= _sortedBodies)
@@ -219,7 +221,7 @@ internal sealed partial class ImpactStepper
     /// </summary>
     private bool FarFromLimit(int k)
     {
-        float margin = _quietMargin + QuietRounding * (_largestCoordinate + _largestRadius);
+        float margin = _farMargin;
         Ends(k, out int a, out int b);
         ref Motion motionA = ref _motion[a];
         if (b < 0)

@@ -94,6 +94,9 @@ public static class Vectors
         return x * x + y * y + z * z;
     }
 
+    /// <summary>max(|v_x|, |v_y|, |v_z|): how far from the origin a point lies along its farthest axis, which sets how finely a float places it.</summary>
+    internal static float LargestCoordinate(Vector3 v) => MathF.Max(MathF.Max(MathF.Abs(v.X), MathF.Abs(v.Y)), MathF.Abs(v.Z));
+
     /// <summary>|v|² in scalar arithmetic: exactly <see cref="Vector3.LengthSquared"/>, without DPPS (see <see cref="Dot"/>).</summary>
     [MethodImpl(MethodImplOptions.AggressiveInlining)]
     internal static float LengthSquared(Vector3 v) => v.X * v.X + v.Y * v.Y + v.Z * v.Z;

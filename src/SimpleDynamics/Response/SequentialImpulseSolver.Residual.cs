@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using SimpleDynamics.Mathematics;
 
 namespace SimpleDynamics.Response;
 
@@ -146,12 +147,9 @@ public sealed partial class SequentialImpulseSolver
     /// </summary>
     private bool StaysDeep(ref ContactConstraint c)
     {
-        float extent = MathF.Max(LargestCoordinate(_positions[c.A]), LargestCoordinate(_positions[c.B]));
+        float extent = MathF.Max(Vectors.LargestCoordinate(_positions[c.A]), Vectors.LargestCoordinate(_positions[c.B]));
         return Depth(ref c, out _) > _slop + MathF.Max(0.001f * _slop, extent * (1f / (1 << 23)));
     }
-
-    private static float LargestCoordinate(Vector3 v) =>
-        MathF.Max(MathF.Max(MathF.Abs(v.X), MathF.Abs(v.Y)), MathF.Abs(v.Z));
 
     /// <summary>
     /// Queues the touching contacts of <paramref name="slot"/> now deeper than the slop (<see cref="StaysDeep"/>; the
