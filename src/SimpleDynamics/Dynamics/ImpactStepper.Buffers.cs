@@ -32,32 +32,42 @@ internal sealed partial class ImpactStepper
         }
 
         _linked = true;
-        (_linkedStep, _linkedContacts, _linkedBodies) = (_stepNumber, _contactCount, _bodyCount);
+        (_linkedEnds, _linkedBodies) = (_endsVersion, _bodyCount);
     }
 
     /// <summary>
     /// Reads the world indices of the bodies of the contacts not read yet this step (all of them at its first
     /// substep) into <see cref="_ends"/>, so that the passes over the contacts find them in one small array instead
-    /// of in two body objects per contact.
+    /// of in two body objects per contact. A plane contact's second end is ~p (−1 − p) for plane p. Whenever the ends
+    /// differ from those read before (detection found other contacts, or the same in another order, or the step added
+    /// one), <see cref="_endsVersion"/> moves on: what was worked out for the old ones (the body lists, the quiet
+    /// substeps' sorting) no longer holds.
     /// </summary>
     private void ReadEnds()
     {
+        int from = _endsCount;
+        bool changed = _contactCount > _endsCount;
         if (_endsStep != _stepNumber)
         {
             _endsStep = _stepNumber;
-            _endsCount = 0;
+            from = 0;
+            changed = _contactCount != _endsCount;
         }
 
-        for (int k = _endsCount; k < _contactCount; k++)
+        for (int k = from; k < _contactCount; k++)
         {
-            _ends[2 * k] = _contacts[k].BodyA.index;
-            _ends[2 * k + 1] = _contacts[k].BodyB.index; // −1: the ground of a plane
+            ref Contact contact = ref _contacts[k];
+            int a = contact.BodyA.index, b = contact.IsPlaneContact ? ~contact.PlaneIndex : contact.BodyB.index;
+            changed |= (_ends[2 * k] != a) | (_ends[2 * k + 1] != b);
+            _ends[2 * k] = a;
+            _ends[2 * k + 1] = b;
         }
 
         _endsCount = _contactCount;
+        _endsVersion += changed ? 1 : 0;
     }
 
-    /// <summary>The world indices of contact k's bodies (b = −1 for a plane's ground).</summary>
+    /// <summary>The world indices of contact k's bodies (b = ~p, negative, for plane p).</summary>
     private void Ends(int k, out int a, out int b)
     {
         a = _ends[2 * k];
@@ -139,6 +149,7 @@ internal sealed partial class ImpactStepper
         Buffers.EnsureCapacity(ref _keepsToFrame, n);
         Buffers.EnsureCapacity(ref _sortedAt, n);
         Buffers.EnsureCapacity(ref _restless, n);
+        Buffers.EnsureCapacity(ref _drifted, n);
     }
 
     private void EnsureContacts(int count)
@@ -147,7 +158,8 @@ internal sealed partial class ImpactStepper
         Buffers.EnsureCapacity(ref _ends, 2 * count);
         Buffers.EnsureCapacity(ref _jamState, count);
         Buffers.EnsureCapacity(ref _limit, count);
-        Buffers.EnsureCapacity(ref _nearLimit, count);
+        Buffers.EnsureCapacity(ref _sortedPairs, 2 * count);
+        Buffers.EnsureCapacity(ref _nearBits, (count + 63) >> 6);
         Buffers.EnsureCapacity(ref _toPredict, (count + 63) >> 6);
     }
 
@@ -172,7 +184,8 @@ internal sealed partial class ImpactStepper
         Buffers.ShrinkTo(ref _keepsToFrame, capacity, 0);
         Buffers.ShrinkTo(ref _sortedAt, capacity, 0);
         Buffers.ShrinkTo(ref _restless, capacity, 0);
-        _sortedStep = _linkedStep = -1; // nothing kept: sort and link again
+        Buffers.ShrinkTo(ref _drifted, capacity, 0);
+        _sortedEnds = _linkedEnds = -1; // nothing kept: sort and link again
         Buffers.ShrinkTo(ref _leftOutStart, capacity + 1, 0);
     }
 
@@ -181,11 +194,12 @@ internal sealed partial class ImpactStepper
         Buffers.ShrinkTo(ref _next, 2 * capacity, 0);
         Buffers.ShrinkTo(ref _ends, 2 * capacity, 0);
         Buffers.ShrinkTo(ref _jamState, capacity, 0);
-        _endsStep = 0; // nothing kept: read them again
+        (_endsStep, _endsCount) = (0, 0); // nothing kept: read them again
         Buffers.ShrinkTo(ref _limit, capacity, 0);
-        Buffers.ShrinkTo(ref _nearLimit, capacity, 0);
+        Buffers.ShrinkTo(ref _sortedPairs, 2 * capacity, 0);
+        Buffers.ShrinkTo(ref _nearBits, (capacity + 63) >> 6, 0);
         Buffers.ShrinkTo(ref _toPredict, (capacity + 63) >> 6, 0);
-        _sortedStep = _linkedStep = -1;
+        _sortedEnds = _linkedEnds = -1;
     }
 
     /// <summary>Shrinks the lists of the pairs left out (ImpactStepper.Crowd.cs), which are not needed after their step.</summary>

@@ -151,7 +151,7 @@ internal sealed partial class ImpactStepper
         {
             Ends(k, out int a, out int b);
             Link(k, a, b);
-            _linkedContacts = _contactCount;
+            _linkedEnds = _endsVersion;
         }
 
         _limit[k] = float.NaN;

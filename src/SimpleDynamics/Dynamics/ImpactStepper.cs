@@ -92,14 +92,15 @@ internal sealed partial class ImpactStepper
     private int[] _ends = new int[2 * InitialContacts];
     private int _endsCount; // contacts whose ends were read in step _endsStep
     private long _endsStep;
+    private long _endsVersion; // moves on whenever the ends change (see ReadEnds)
     private int[] _next = new int[2 * InitialContacts];
     private float[] _limit = new float[InitialContacts];
     private Contact[] _contacts = Array.Empty<Contact>(); // the step's contacts (CollisionData.Storage), _contactCount of them
     private int _contactCount;
     private int _bodyCount;
     private bool _linked; // whether _head/_next list each body's contacts yet: only needed once an impact happens, or a quiet substep
-    private long _linkedStep = -1; // the step, contacts and bodies the lists were made for: they hold for the step's substeps
-    private int _linkedContacts, _linkedBodies;
+    private long _linkedEnds = -1; // the ends' version and the bodies the lists were made for: they hold as long as both do
+    private int _linkedBodies;
     private readonly EventQueue _queue = new();
     private double _h;
     private long _stepNumber;
@@ -205,9 +206,9 @@ internal sealed partial class ImpactStepper
         _contacts = contacts.Storage;
         _contactCount = contacts.Count;
         _bodyCount = n;
-        _linked = _linkedStep == _stepNumber && _linkedContacts == _contactCount && _linkedBodies == n; // the lists hold for the step's contacts
         EnsureContacts(_contactCount);
         ReadEnds();
+        _linked = _linkedEnds == _endsVersion && _linkedBodies == n; // the lists hold while the contacts and bodies do
         _queue.Clear();
         PredictFirstImpacts(); // in a quiet substep only the contacts that can come near their limits (ImpactStepper.Quiet.cs)
 
@@ -274,7 +275,6 @@ internal sealed partial class ImpactStepper
             }
         }
 
-        EndQuietSubstep(impacts);
         bodies = step.Bodies; // with any woken by a search (ImpactStepper.Search.cs)
         for (int i = 0; i < _bodyCount; i++)
         {

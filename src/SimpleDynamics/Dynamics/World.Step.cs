@@ -116,6 +116,16 @@ public sealed partial class World
         set => _impacts.PredictQuietly = value;
     }
 
+    /// <summary>For tests: whether quiet substeps check the contacts they leave out (ImpactStepper.Quiet.cs).</summary>
+    internal bool CheckQuietSubsteps
+    {
+        get => _impacts.CheckQuietSubsteps;
+        set => _impacts.CheckQuietSubsteps = value;
+    }
+
+    /// <summary>For tests: contacts left out by quiet substeps that their chords could bring near their limits (none, if sound).</summary>
+    internal long UnpredictedNearLimits => _impacts.UnpredictedNearLimits;
+
     /// <summary>Substeps of the last step whose impacts reached the impact pass's limit.</summary>
     internal int SaturatedSubsteps => _impacts.SaturatedSubsteps;
 
