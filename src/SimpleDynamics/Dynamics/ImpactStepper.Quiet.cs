@@ -337,7 +337,7 @@ internal sealed partial class ImpactStepper
             if (b < 0)
             {
                 ref Contact contact = ref _contacts[k];
-                gap = Vectors.Dot(contact.Normal, motionA.X) - contact.PlaneOffset - motionA.Radius;
+                gap = -ContactGeometry.Unchecked.PlanePenetration(motionA.X, motionA.Radius, contact.Normal, contact.PlaneOffset);
             }
             else
             {
@@ -362,8 +362,7 @@ internal sealed partial class ImpactStepper
         if (b < 0)
         {
             ref Contact contact = ref _contacts[k];
-            float gap = Vectors.Dot(contact.Normal, placeA.Centre) - contact.PlaneOffset - placeA.Radius; // < 0: deep
-            return MathF.Abs(gap) > margin;
+            return MathF.Abs(ContactGeometry.Unchecked.PlanePenetration(placeA.Centre, placeA.Radius, contact.Normal, contact.PlaneOffset)) > margin;
         }
 
         ref Place placeB = ref _sortedAt[b];
