@@ -61,6 +61,33 @@ public struct Contact
     /// <summary>For a plane contact: the plane's surface friction, if it sets one.</summary>
     internal float? PlaneFriction;
 
+    /// <summary>
+    /// Becomes a copy of <paramref name="other"/>, writing the bodies only when they differ: a copy of a struct that
+    /// holds object references writes each through a GC write barrier, and the event store renews the same pairs'
+    /// contacts every step (World.ReportContactEvents; 9 ns of the 14 a contact there took, in the settled 1,000-disc
+    /// pit). Every other field is copied (tested by reflection, so that a field added later cannot be left out).
+    /// </summary>
+    internal void RenewFrom(in Contact other)
+    {
+        if (!ReferenceEquals(BodyA, other.BodyA) || !ReferenceEquals(BodyB, other.BodyB))
+        {
+            this = other;
+            return;
+        }
+
+        Point = other.Point;
+        Normal = other.Normal;
+        Penetration = other.Penetration;
+        ApproachVelocity = other.ApproachVelocity;
+        NormalImpulse = other.NormalImpulse;
+        TangentImpulse = other.TangentImpulse;
+        Key = other.Key;
+        PlaneIndex = other.PlaneIndex;
+        PlaneOffset = other.PlaneOffset;
+        PlaneRestitution = other.PlaneRestitution;
+        PlaneFriction = other.PlaneFriction;
+    }
+
     /// <summary>True when body B is the ground of a <see cref="StaticPlane"/>.</summary>
     public readonly bool IsPlaneContact => PlaneIndex >= 0;
 

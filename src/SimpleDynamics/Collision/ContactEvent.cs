@@ -25,6 +25,10 @@ public readonly struct ContactEvent
     /// <summary>The plane's index in <see cref="World.Planes"/> for a plane contact, else −1.</summary>
     public int PlaneIndex { get; }
 
+    /// <summary>Whether this is the pair of these bodies (or body and plane), the same way round.</summary>
+    internal bool Is(RigidBody bodyA, RigidBody? bodyB, int planeIndex) =>
+        ReferenceEquals(BodyA, bodyA) && ReferenceEquals(BodyB, bodyB) && PlaneIndex == planeIndex;
+
     /// <summary>True when the pair is a body and a plane.</summary>
     public bool IsPlaneContact => PlaneIndex >= 0;
 

@@ -2,6 +2,7 @@ using System;
 using System.Collections.Generic;
 using System.Linq;
 using System.Numerics;
+using System.Reflection;
 using SimpleDynamics.Bodies;
 using SimpleDynamics.Collision;
 using SimpleDynamics.Tests.Properties;
@@ -118,6 +119,44 @@ public class ContactEventTests
         Assert.Equal(0, world.ContactsOf(top, buffer)); // removed: no contacts now, though the last step had one
     }
 
+    /// <summary>
+    /// The event store renews a pair's contact each step without writing its bodies again (Contact.RenewFrom): every
+    /// other field must be copied, including any added to <see cref="Contact"/> later.
+    /// </summary>
+    [Fact]
+    public void A_contact_renewed_from_the_same_pair_takes_every_field()
+    {
+        var a = new RigidBody(1f, 0.5f, Vector3.Zero);
+        var b = new RigidBody(2f, 0.5f, Vector3.UnitX);
+        object boxed = new Contact(a, b, Vector3.Zero, Vector3.UnitX, 0f);
+        float value = 10f;
+        FieldInfo[] fields = typeof(Contact).GetFields(BindingFlags.Instance | BindingFlags.Public | BindingFlags.NonPublic);
+        foreach (FieldInfo field in fields.Where(f => f.FieldType != typeof(RigidBody)))
+        {
+            object distinct = field.FieldType switch
+            {
+                Type t when t == typeof(float) => value++,
+                Type t when t == typeof(float?) => (float?)value++,
+                Type t when t == typeof(int) => (int)value++,
+                Type t when t == typeof(ulong) => (ulong)value++,
+                Type t when t == typeof(Vector3) => new Vector3(value++, value++, value++),
+                _ => throw new Xunit.Sdk.XunitException($"Contact.{field.Name} is of a type this test does not fill: {field.FieldType}"),
+            };
+            field.SetValue(boxed, distinct);
+        }
+
+        var source = (Contact)boxed;
+        var sameBodies = new Contact(a, b, Vector3.Zero, Vector3.UnitX, 0f);
+        var otherBodies = new Contact(b, a, Vector3.Zero, Vector3.UnitX, 0f);
+        sameBodies.RenewFrom(source);
+        otherBodies.RenewFrom(source);
+        foreach (FieldInfo field in fields)
+        {
+            Assert.Equal(field.GetValue(source), field.GetValue(sameBodies));
+            Assert.Equal(field.GetValue(source), field.GetValue(otherBodies));
+        }
+    }
+
     [Fact]
     public void Settings_reject_bad_values_and_keep_the_old_ones()
     {
@@ -186,11 +225,11 @@ public class ContactEventTests
                 Law.Holds(now.Count == events.Touching.Length, $"step {step}: a pair listed twice");
 
                 // Each body's contacts are the touching pairs that name it, as this step measured them (a pair that
-                // touched last step too is listed with this step's contact, not last step's).
-                var measured = new Dictionary<(int, int), float>();
+                // touched last step too is listed with this step's contact, every field of it, not last step's).
+                var measured = new Dictionary<(int, int), Contact>();
                 foreach (ref readonly Contact c in world.Collisions.Contacts)
                 {
-                    measured.TryAdd(Pairs.Key(c), c.Penetration);
+                    measured.TryAdd(Pairs.Key(c), c);
                 }
 
                 foreach (RigidBody body in world.Bodies)
@@ -202,7 +241,7 @@ public class ContactEventTests
                     world.ContactsOf(body, contacts);
                     foreach (Contact c in contacts)
                     {
-                        Law.Holds(measured.TryGetValue(Pairs.Key(c), out float depth) && depth == c.Penetration,
+                        Law.Holds(measured.TryGetValue(Pairs.Key(c), out Contact thisStep) && thisStep.Equals(c),
                             $"step {step}: ContactsOf({body}) lists {Pairs.Key(c)} at depth {c.Penetration}, not as this step measured it");
                     }
                 }
