@@ -289,6 +289,7 @@ internal sealed partial class ImpactStepper
 
         if (_jammed)
         {
+            step.ContactsPushed = true; // SlowFarther adds to contact.NormalImpulse (a jam follows an impact, which has said so already)
             SettleJams(bodies, step.Planes);
         }
 
@@ -301,6 +302,7 @@ internal sealed partial class ImpactStepper
     /// </summary>
     private void Impact(StepContext step, ICollisionResponder responder, ref Contact contact, double time)
     {
+        step.ContactsPushed = true; // the responder, StopApproach and RestOnImmovable add to contact.NormalImpulse
         RigidBody bodyA = contact.BodyA, bodyB = contact.BodyB;
         int a = bodyA.index, b = bodyB.index;
         Advance(bodyA, a, time);

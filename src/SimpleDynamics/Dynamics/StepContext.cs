@@ -98,12 +98,20 @@ public sealed class StepContext
         }
     }
 
+    /// <summary>
+    /// Whether the impact pass has pushed a contact in this step (an impact answered, or a jam settled): until then no
+    /// contact's <see cref="Contact.NormalImpulse"/> has changed since detection, and the solver's measure need not read
+    /// it (SequentialImpulseSolver.MeasureRange).
+    /// </summary>
+    internal bool ContactsPushed { get; set; }
+
     internal void Begin(float dt, int substeps)
     {
         TimeStep = dt;
         Substeps = substeps;
         Substep = 0;
         StepNumber++;
+        ContactsPushed = false;
     }
 
     internal void Enter(StepStage stage) => Stage = stage;

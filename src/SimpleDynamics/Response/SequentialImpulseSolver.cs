@@ -307,6 +307,7 @@ public sealed partial class SequentialImpulseSolver : ICollisionResponder
         OrderAlongGravity(contacts, step.Gravity);
         ArrangeContacts(contacts);
         _prepared = 0;
+        _detectedPushed = false;
         SweepsThisStep = 0;
         LocalSweepsThisStep = 0;
         SubstepsFinishedLocallyThisStep = 0;
