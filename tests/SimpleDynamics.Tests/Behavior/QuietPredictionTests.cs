@@ -197,7 +197,8 @@ public class QuietPredictionTests
         }
     }
 
-    private static RigidBody DroppedBall(World world, bool planar)
+    /// <summary>A 5 kg ball 1 m above the highest body's centre.</summary>
+    internal static RigidBody DroppedBall(World world, bool planar)
     {
         float top = 0;
         foreach (RigidBody body in world.Bodies)

@@ -1,10 +1,10 @@
 using System;
-using System.Numerics;
 using FsCheck;
 using FsCheck.Fluent;
 using SimpleDynamics.Bodies;
 using SimpleDynamics.Collision;
 using SimpleDynamics.Response;
+using SimpleDynamics.Tests.Behavior;
 using SimpleDynamics.Tests.Properties;
 using Xunit;
 using Xunit.Abstractions;
@@ -56,8 +56,8 @@ public class MeasurePushTests
                 {
                     if (step == pour.DropAt)
                     {
-                        world.Add(HeavyBall(world, pour.Planar));
-                        reference.Add(HeavyBall(reference, pour.Planar));
+                        world.Add(QuietPredictionTests.DroppedBall(world, pour.Planar));
+                        reference.Add(QuietPredictionTests.DroppedBall(reference, pour.Planar));
                     }
 
                     world.Step(Dt);
@@ -125,22 +125,6 @@ public class MeasurePushTests
         world.Detector = new PushingDetector();
         world.SleepingEnabled = false;
         return world;
-    }
-
-    /// <summary>A 5 kg ball 1 m above the highest body.</summary>
-    private static RigidBody HeavyBall(World world, bool planar)
-    {
-        float top = float.MinValue;
-        foreach (RigidBody body in world.Bodies)
-        {
-            top = MathF.Max(top, body.Position.Y + body.Radius);
-        }
-
-        const float radius = 0.15f;
-        var centre = new Vector3(0.31f, top + 1f + radius, 0f);
-        return planar
-            ? new RigidBody(5f, radius, centre, Inertia.Disc(5f, radius))
-            : new RigidBody(5f, radius, centre, Inertia.SolidSphere(5f, radius));
     }
 
     /// <summary>The spatial hash's contacts, every third one handed over with a small normal impulse.</summary>
