@@ -230,11 +230,13 @@ public sealed partial class SequentialImpulseSolver
             Vector3 spin = c.RhoA * a.Angular + c.RhoB * b.Angular;
             float limit = c.Friction * oldNormal;
             float old1 = c.FrictionImpulse1, old2 = c.FrictionImpulse2;
-            c.FrictionImpulse1 -= c.TangentMass1 * (Vectors.Dot(linear, f.Tangent1) - Vectors.Dot(spin, f.Tangent2));
-            c.FrictionImpulse2 -= c.TangentMass2 * (Vectors.Dot(linear, f.Tangent2) + Vectors.Dot(spin, f.Tangent1));
-            ClampFriction(ref c.FrictionImpulse1, ref c.FrictionImpulse2, limit);
-            change1 = c.FrictionImpulse1 - old1;
-            change2 = c.FrictionImpulse2 - old2;
+            float friction1 = old1 - c.TangentMass1 * (Vectors.Dot(linear, f.Tangent1) - Vectors.Dot(spin, f.Tangent2));
+            float friction2 = old2 - c.TangentMass2 * (Vectors.Dot(linear, f.Tangent2) + Vectors.Dot(spin, f.Tangent1));
+            ClampFriction(ref friction1, ref friction2, limit); // on locals: the sweep's chain does not wait on a store
+            c.FrictionImpulse1 = friction1;
+            c.FrictionImpulse2 = friction2;
+            change1 = friction1 - old1;
+            change2 = friction2 - old2;
         }
         else if (normal == oldNormal)
         {
