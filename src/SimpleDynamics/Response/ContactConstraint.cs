@@ -67,7 +67,10 @@ internal struct ContactConstraint
     public readonly bool IsPlaneContact => !float.IsNaN(PlaneOffset);
 
     /// <summary>The one tangent of a planar step, t₁ = n × ẑ = (n_y, −n_x, 0).</summary>
-    public readonly Vector3 PlanarTangent => new(Normal.Y, -Normal.X, 0);
+    public readonly Vector3 PlanarTangent => PlanarTangentOf(Normal);
+
+    /// <summary>The planar tangent of normal <paramref name="n"/> (see <see cref="PlanarTangent"/>).</summary>
+    public static Vector3 PlanarTangentOf(Vector3 n) => new(n.Y, -n.X, 0);
 }
 
 /// <summary>

@@ -281,7 +281,7 @@ public sealed partial class SequentialImpulseSolver
                 c.PlanarSpinA = spinA;
                 c.PlanarSpinB = spinB;
                 c.TangentMass1 = InverseOrZero(inverseMassSum + rhoA * spinA - rhoB * spinB);
-                float friction = Vectors.Dot(_stepImpulses[k].Friction, new Vector3(normal.Y, -normal.X, 0)); // along c.PlanarTangent
+                float friction = Vectors.Dot(_stepImpulses[k].Friction, ContactConstraint.PlanarTangentOf(normal)); // from the local normal, not read back
                 float none = 0; // the disc's clamp with p₂ = 0 rounds as the 3-D path does (Math.Clamp may not)
                 ClampFriction(ref friction, ref none, c.Friction * c.NormalImpulse);
                 c.FrictionImpulse1 = friction;
